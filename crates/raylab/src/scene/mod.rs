@@ -1,0 +1,218 @@
+//! The scene description: camera, image, lights, materials and objects, as
+//! read from a TOML scene file ([`load`]) or an MIT 6.837 scene file.
+//!
+//! The description holds data only; the lectures compute with it (cameras in
+//! 01, intersections in 02–04, shading in 05–08). Loaders check every value
+//! they read, so a `Scene` is always usable: finite numbers, unit normals and
+//! directions where promised, invertible transforms, materials that exist.
+
+mod error;
+mod mesh;
+mod mit6837;
+mod toml;
+
+use std::path::Path;
+use std::sync::Arc;
+
+use crate::color::Color;
+use crate::math::{Float, Mat4, Vec3};
+
+pub use error::SceneError;
+pub use mesh::Mesh;
+pub use mit6837::load_mit6837;
+pub use toml::{load_toml, parse_toml};
+
+/// Reads a scene file: TOML when the name ends in `.toml`, otherwise the
+/// MIT 6.837 format.
+pub fn load(path: impl AsRef<Path>) -> Result<Scene, SceneError> {
+    let path = path.as_ref();
+    if path.extension().is_some_and(|e| e == "toml") { load_toml(path) } else { load_mit6837(path) }
+}
+
+/// A whole scene.
+#[derive(Clone, Debug)]
+pub struct Scene {
+    pub camera: Camera,
+    /// Image size in pixels (the renderer may override it).
+    pub width: u32,
+    pub height: u32,
+    /// The colour of rays that hit nothing.
+    pub background: Color,
+    /// The ambient light Iₐ.
+    pub ambient: Color,
+    pub lights: Vec<Light>,
+    pub materials: Vec<Material>,
+    pub objects: Vec<Object>,
+}
+
+/// The camera as the scene file describes it. Lecture 01 turns it into a ray
+/// generator. `up` need not be perpendicular to the view direction but is
+/// never parallel to it, and `eye ≠ at` (the loaders check both).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Camera {
+    /// A pinhole camera; `fovy` is the full vertical field of view in radians.
+    Perspective { eye: Vec3, at: Vec3, up: Vec3, fovy: Float },
+    /// A parallel projection; `height` is the full height of the view in world units.
+    Orthographic { eye: Vec3, at: Vec3, up: Vec3, height: Float },
+}
+
+/// A light source with its colour (intensity) and whether it casts shadows.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Light {
+    pub color: Color,
+    /// False for a light whose shadow rays are never traced.
+    pub shadows: bool,
+    pub kind: LightKind,
+}
+
+/// Where a light's light comes from.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum LightKind {
+    /// Light travelling along the unit vector `direction` (from the light
+    /// toward the scene), from infinitely far away.
+    Directional { direction: Vec3 },
+    /// Light from `position`, dimmed by 1 / (c + l·d + q·d²).
+    Point { position: Vec3, attenuation: Attenuation },
+    /// A point light restricted to a cone around the unit `direction`:
+    /// full inside `inner` (half-angle, radians), falling to zero at `outer`.
+    Spot { position: Vec3, direction: Vec3, inner: Float, outer: Float, attenuation: Attenuation },
+}
+
+/// Distance attenuation 1 / (constant + linear·d + quadratic·d²) of point and
+/// spot lights; the default (1, 0, 0) is no attenuation.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Attenuation {
+    pub constant: Float,
+    pub linear: Float,
+    pub quadratic: Float,
+}
+
+impl Default for Attenuation {
+    fn default() -> Self {
+        Self { constant: 1.0, linear: 0.0, quadratic: 0.0 }
+    }
+}
+
+/// Which specular highlight a material uses.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Specular {
+    /// (V·R)ⁿ
+    Phong,
+    /// (N·H)ⁿ
+    #[default]
+    Blinn,
+}
+
+/// A surface's optical properties (6.837's `PhongMaterial`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Material {
+    pub name: String,
+    /// k_d, also the ambient reflectance kₐ.
+    pub diffuse: Color,
+    /// k_s
+    pub specular: Color,
+    /// The specular exponent n.
+    pub exponent: Float,
+    pub model: Specular,
+    /// k_r, the weight of the mirror ray.
+    pub reflective: Color,
+    /// k_t, the weight of the transmitted ray.
+    pub transparent: Color,
+    /// The index of refraction η of the material (the outside is vacuum, η = 1).
+    pub ior: Float,
+}
+
+impl Default for Material {
+    fn default() -> Self {
+        Self {
+            name: String::new(),
+            diffuse: Color::ONE,
+            specular: Color::ZERO,
+            exponent: 1.0,
+            model: Specular::default(),
+            reflective: Color::ZERO,
+            transparent: Color::ZERO,
+            ior: 1.0,
+        }
+    }
+}
+
+/// A shape placed in the world with a material.
+#[derive(Clone, Debug)]
+pub struct Object {
+    pub shape: Shape,
+    /// Index into [`Scene::materials`].
+    pub material: usize,
+    /// `None`: the shape is given in world coordinates.
+    pub transform: Option<Transform>,
+}
+
+/// An invertible affine placement of an object, with both directions.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Transform {
+    pub world_from_object: Mat4,
+    pub object_from_world: Mat4,
+}
+
+impl Transform {
+    /// The placement `world_from_object`, or `None` when it is not invertible
+    /// (a zero scale) or not finite.
+    pub fn new(world_from_object: Mat4) -> Option<Self> {
+        let det = world_from_object.determinant();
+        if !det.is_finite() || det == 0.0 {
+            return None;
+        }
+        let object_from_world = world_from_object.inverse();
+        object_from_world.is_finite().then_some(Self { world_from_object, object_from_world })
+    }
+}
+
+/// The shapes a scene can hold.
+#[derive(Clone, Debug)]
+pub enum Shape {
+    Sphere {
+        center: Vec3,
+        radius: Float,
+    },
+    /// The plane n·p = offset, `normal` unit length.
+    Plane {
+        normal: Vec3,
+        offset: Float,
+    },
+    /// The axis-aligned box min ≤ p ≤ max.
+    Box {
+        min: Vec3,
+        max: Vec3,
+    },
+    /// A planar polygon, at least three vertices, not all on a line.
+    Polygon {
+        vertices: Vec<Vec3>,
+    },
+    /// A triangle, with per-vertex normals when given.
+    Triangle {
+        vertices: [Vec3; 3],
+        normals: Option<[Vec3; 3]>,
+    },
+    Mesh(Arc<Mesh>),
+    /// The canonical capped cylinder x² + y² ≤ 1, 0 ≤ z ≤ 1.
+    Cylinder,
+    /// The canonical capped cone x² + y² ≤ (1 − z)², 0 ≤ z ≤ 1: base of radius
+    /// 1 at z = 0, apex at (0, 0, 1).
+    Cone,
+}
+
+impl Shape {
+    /// The name of the shape's kind as written in a TOML scene.
+    pub fn kind(&self) -> &'static str {
+        match self {
+            Shape::Sphere { .. } => "sphere",
+            Shape::Plane { .. } => "plane",
+            Shape::Box { .. } => "box",
+            Shape::Polygon { .. } => "polygon",
+            Shape::Triangle { .. } => "triangle",
+            Shape::Mesh(_) => "mesh",
+            Shape::Cylinder => "cylinder",
+            Shape::Cone => "cone",
+        }
+    }
+}

@@ -1,0 +1,1 @@
+//! Lecture 01: vectors, transforms, look-at and the pinhole camera.

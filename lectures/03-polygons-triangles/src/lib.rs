@@ -1,0 +1,1 @@
+//! Lecture 03: boxes by slabs, polygons and triangles.

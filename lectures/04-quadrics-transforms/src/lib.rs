@@ -1,0 +1,1 @@
+//! Lecture 04: cylinders and cones, transformed objects and their normals.
