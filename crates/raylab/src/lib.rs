@@ -9,6 +9,7 @@
 //! ones. The kit knows no lecture.
 
 pub mod color;
+pub mod compare;
 pub mod data;
 pub mod hit;
 pub mod image;

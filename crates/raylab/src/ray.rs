@@ -55,7 +55,8 @@ impl Interval {
         Self { min: self.min, max }
     }
 
-    /// True when no t satisfies `min < t < max`.
+    /// True when no t satisfies `min < t < max` (also when an end is NaN).
+    #[allow(clippy::neg_cmp_op_on_partial_ord)] // the negation is what makes NaN ends empty
     pub fn is_empty(&self) -> bool {
         !(self.min < self.max)
     }

@@ -15,13 +15,15 @@ use crate::stats::{RayStats, thread_totals};
 
 /// Calls `f(x, y)` for every pixel of a `width × height` grid, rows in
 /// parallel, and returns the values row-major with what the calls counted
-/// in [`crate::stats`].
+/// in [`crate::stats`]. The counts are also added to the calling thread's
+/// counters, so an enclosing [`crate::stats::measure`] sees them.
 pub fn render_map<T, F>(width: u32, height: u32, f: F) -> (Vec<T>, RayStats)
 where
     T: Send,
     F: Fn(u32, u32) -> T + Sync,
 {
     let progress = Progress::new(height);
+    let own_before = thread_totals();
     let total = Mutex::new(RayStats::default());
     let rows: Vec<Vec<T>> = (0..height)
         .into_par_iter()
@@ -34,7 +36,10 @@ where
         })
         .collect();
     progress.finish();
-    (rows.into_iter().flatten().collect(), total.into_inner().unwrap())
+    let total = total.into_inner().unwrap();
+    // Hand the other threads' counts to this thread (its own rows are there already).
+    crate::stats::add(total - (thread_totals() - own_before));
+    (rows.into_iter().flatten().collect(), total)
 }
 
 /// [`render_map`] for colours: the image and the statistics.
@@ -91,5 +96,13 @@ mod tests {
         let expected: Vec<(u32, u32)> = (0..3).flat_map(|y| (0..5).map(move |x| (x, y))).collect();
         assert_eq!(values, expected);
         assert_eq!(stats.get(Counter::PrimaryRays), 15);
+    }
+
+    #[test]
+    fn an_enclosing_measure_sees_the_whole_render_once() {
+        let ((_, inner), outer) =
+            crate::stats::measure(|| render_map(64, 64, |_, _| count(Counter::ShadowRays)));
+        assert_eq!(inner.get(Counter::ShadowRays), 64 * 64);
+        assert_eq!(outer, inner);
     }
 }

@@ -2,9 +2,11 @@
 //! ray–primitive tests were made.
 //!
 //! Counting is always on and costs one thread-local add: lectures call
-//! [`count`] where they spawn a ray or test a primitive; [`measure`] (one
-//! thread) and the pixel loop (all threads) add up what a piece of work
-//! counted, so concurrent renders and tests never mix their figures.
+//! [`count`] where they spawn a ray or test a primitive; [`measure`] adds up
+//! what a piece of work counted on the calling thread, and the pixel loop
+//! hands the counts of its worker threads back to the thread that called it,
+//! so `measure(|| render(…))` sees the whole render and concurrent renders
+//! and tests never mix their figures.
 //! The cost is measured in the kit's benchmark, not assumed.
 
 use std::cell::Cell;
@@ -120,6 +122,13 @@ pub fn count_n(c: Counter, n: u64) {
     });
 }
 
+/// Adds a whole set of counts to this thread's counters.
+pub fn add(stats: RayStats) {
+    for c in Counter::ALL {
+        count_n(c, stats.get(c));
+    }
+}
+
 /// What this thread has counted since it started (monotonic).
 pub fn thread_totals() -> RayStats {
     COUNTS.with(|counts| RayStats { counts: std::array::from_fn(|i| counts[i].get()) })
@@ -151,8 +160,7 @@ mod tests {
 
     #[test]
     fn json_uses_the_documented_keys() {
-        let mut s = RayStats::default();
-        s.counts = [1, 2, 3, 4, 5];
+        let s = RayStats { counts: [1, 2, 3, 4, 5] };
         insta::assert_snapshot!(s.to_json(), @r#"
         {
           "rays.primary": 1,

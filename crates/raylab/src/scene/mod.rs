@@ -6,10 +6,16 @@
 //! they read, so a `Scene` is always usable: finite numbers, unit normals and
 //! directions where promised, invertible transforms, materials that exist.
 
+mod checks;
 mod error;
+mod icosphere;
 mod mesh;
 mod mit6837;
 mod toml;
+mod toml_spec;
+#[cfg(test)]
+mod topology;
+mod torus;
 
 use std::path::Path;
 use std::sync::Arc;
@@ -19,7 +25,7 @@ use crate::math::{Float, Mat4, Vec3};
 
 pub use error::SceneError;
 pub use mesh::Mesh;
-pub use mit6837::load_mit6837;
+pub use mit6837::{load_mit6837, parse_mit6837};
 pub use toml::{load_toml, parse_toml};
 
 /// Reads a scene file: TOML when the name ends in `.toml`, otherwise the

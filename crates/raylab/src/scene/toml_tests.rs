@@ -1,0 +1,396 @@
+//! Tests of the TOML scene reader: a full example read back to the values
+//! written, and the error message of every kind of bad value, with its line
+//! and column counted by hand from the inputs.
+
+use std::path::Path;
+
+use super::*;
+use crate::math::consts::{FRAC_1_SQRT_2, FRAC_PI_2, FRAC_PI_3, FRAC_PI_6};
+use crate::scene::Attenuation;
+use crate::scene::mesh::tests::temp_dir;
+
+/// Conversions degrees → radians and normalisations are a few roundings off
+/// the exact value: 4ε covers them in f32 and f64.
+const ROUNDING: Float = 4.0 * Float::EPSILON;
+
+/// A valid camera in five lines, so that what follows starts on line 6.
+const CAMERA: &str = "[camera]\ntype = \"perspective\"\neye = [0, 0, 5]\nat = [0, 0, 0]\nfovy = 40\n";
+
+fn parse(text: &str) -> Result<Scene, SceneError> {
+    parse_toml(text, Path::new("scenes/a.toml"))
+}
+
+/// The error message of `text` (the camera prefix included when `with_camera`).
+fn error(text: &str) -> String {
+    match parse(text) {
+        Ok(_) => panic!("expected an error from:\n{text}"),
+        Err(e) => e.to_string(),
+    }
+}
+
+/// The error of one object table after the camera: its first line is line 6.
+fn object_error(object: &str) -> String {
+    error(&format!("{CAMERA}[[objects]]\n{object}"))
+}
+
+const FULL: &str = r#"
+[image]
+width = 64
+height = 48
+background = [0.5, 0.25, 0]
+ambient = [0.125, 0.125, 0.125]
+
+[camera]
+type = "perspective"
+eye = [0, 1, 5]
+at = [0, 1, 0]
+up = [0, 1, 0]
+fovy = 90
+
+[[lights]]
+type = "directional"
+direction = [0, -2, 0]
+color = [1, 0.5, 0.25]
+shadows = false
+
+[[lights]]
+type = "point"
+position = [0, 5, 0]
+attenuation = [1, 0.5, 0.25]
+
+[[lights]]
+type = "spot"
+position = [0, 4, 0]
+direction = [0, 0, -3]
+inner = 30
+outer = 60
+attenuation = [0, 0, 1]
+
+[materials.red]
+diffuse = [1, 0, 0]
+specular = [0.5, 0.5, 0.5]
+exponent = 32
+model = "phong"
+reflective = [0.25, 0.25, 0.25]
+transparent = [0.5, 0.5, 0.5]
+ior = 1.5
+
+[materials.glass]
+transparent = [1, 1, 1]
+model = "blinn"
+ior = 2
+
+[[objects]]
+type = "sphere"
+center = [1, 2, 3]
+radius = 0.5
+material = "red"
+transform = [
+  { translate = [0, 1, 0] },
+  { rotate_x = 90 },
+  { rotate_y = 30 },
+  { rotate_z = 45 },
+  { rotate = { axis = [1, 1, 0], angle = 45 } },
+  { scale = [1, 2, 1] },
+  { scale = 0.5 },
+  { matrix = [1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1] },
+]
+
+[[objects]]
+type = "plane"
+normal = [0, 2, 0]
+offset = 4
+material = "glass"
+
+[[objects]]
+type = "box"
+min = [-1, -2, -3]
+max = [1, 2, 3]
+
+[[objects]]
+type = "polygon"
+vertices = [[0, 0, 0], [2, 0, 0], [2, 2, 0], [0, 2, 0]]
+
+[[objects]]
+type = "triangle"
+vertices = [[0, 0, 0], [1, 0, 0], [0, 1, 0]]
+normals = [[0, 0, 2], [0, 0, 1], [1, 0, 1]]
+
+[[objects]]
+type = "mesh"
+file = "quad.obj"
+
+[[objects]]
+type = "icosphere"
+subdivisions = 1
+
+[[objects]]
+type = "torus"
+major = 2
+minor = 0.5
+segments = [8, 6]
+
+[[objects]]
+type = "cylinder"
+
+[[objects]]
+type = "cone"
+"#;
+
+#[test]
+fn full_example_loads_to_the_values_written() {
+    let dir = temp_dir("toml-full");
+    std::fs::write(dir.join("quad.obj"), "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n").unwrap();
+    std::fs::write(dir.join("full.toml"), FULL).unwrap();
+    let scene = crate::scene::load(dir.join("full.toml")).unwrap();
+
+    assert_eq!((scene.width, scene.height), (64, 48));
+    assert_eq!(scene.background, Color::new(0.5, 0.25, 0.0));
+    assert_eq!(scene.ambient, Color::splat(0.125));
+    let Camera::Perspective { eye, at, up, fovy } = scene.camera else { panic!("perspective camera") };
+    assert_eq!((eye, at, up), (Vec3::new(0.0, 1.0, 5.0), Vec3::Y, Vec3::Y));
+    approx::assert_abs_diff_eq!(fovy, FRAC_PI_2, epsilon = ROUNDING); // 90°
+
+    // Lights: directions normalised, defaults white and casting shadows.
+    assert_eq!(scene.lights.len(), 3);
+    let sun = scene.lights[0];
+    assert_eq!(sun.kind, LightKind::Directional { direction: Vec3::NEG_Y });
+    assert_eq!((sun.color, sun.shadows), (Color::new(1.0, 0.5, 0.25), false));
+    let lamp = scene.lights[1];
+    let attenuation = Attenuation { constant: 1.0, linear: 0.5, quadratic: 0.25 };
+    assert_eq!(lamp.kind, LightKind::Point { position: Vec3::new(0.0, 5.0, 0.0), attenuation });
+    assert_eq!((lamp.color, lamp.shadows), (WHITE, true));
+    let LightKind::Spot { position, direction, inner, outer, attenuation } = scene.lights[2].kind else {
+        panic!("spot light")
+    };
+    assert_eq!((position, direction), (Vec3::new(0.0, 4.0, 0.0), Vec3::NEG_Z));
+    approx::assert_abs_diff_eq!(inner, FRAC_PI_6, epsilon = ROUNDING); // 30°
+    approx::assert_abs_diff_eq!(outer, FRAC_PI_3, epsilon = ROUNDING); // 60°
+    assert_eq!(attenuation, Attenuation { constant: 0.0, linear: 0.0, quadratic: 1.0 });
+
+    // Materials in the order of the file (not alphabetical), then the implicit default once.
+    let names: Vec<&str> = scene.materials.iter().map(|m| m.name.as_str()).collect();
+    assert_eq!(names, ["red", "glass", "default"]);
+    let red = &scene.materials[0];
+    assert_eq!((red.diffuse, red.specular, red.exponent), (Color::X, Color::splat(0.5), 32.0));
+    assert_eq!(
+        (red.model, red.reflective, red.transparent, red.ior),
+        (Specular::Phong, Color::splat(0.25), Color::splat(0.5), 1.5)
+    );
+    let glass = &scene.materials[1];
+    assert_eq!(
+        (glass.diffuse, glass.model, glass.transparent, glass.ior),
+        (WHITE, Specular::Blinn, WHITE, 2.0)
+    );
+    assert_eq!(scene.materials[2], Material { name: "default".into(), ..Material::default() });
+    let material: Vec<usize> = scene.objects.iter().map(|o| o.material).collect();
+    assert_eq!(material, [0, 1, 2, 2, 2, 2, 2, 2, 2, 2]);
+
+    // Objects.
+    let kinds: Vec<&str> = scene.objects.iter().map(|o| o.shape.kind()).collect();
+    let expected =
+        ["sphere", "plane", "box", "polygon", "triangle", "mesh", "mesh", "mesh", "cylinder", "cone"];
+    assert_eq!(kinds, expected);
+    let Shape::Sphere { center, radius } = scene.objects[0].shape else { panic!() };
+    assert_eq!((center, radius), (Vec3::new(1.0, 2.0, 3.0), 0.5));
+    // Every step but the translation fixes the origin: it lands at (0, 1, 0).
+    // The rotations keep volumes; the scales multiply them by 1·2·1 and 0.5³: det = 0.25.
+    let placed = scene.objects[0].transform.unwrap();
+    approx::assert_abs_diff_eq!(
+        placed.world_from_object.transform_point3(Vec3::ZERO),
+        Vec3::Y,
+        epsilon = ROUNDING
+    );
+    approx::assert_abs_diff_eq!(placed.world_from_object.determinant(), 0.25, epsilon = ROUNDING);
+    assert!(scene.objects[1..].iter().all(|o| o.transform.is_none()));
+    // The plane 2y = 4 is the plane y = 2.
+    let Shape::Plane { normal, offset } = scene.objects[1].shape else { panic!() };
+    assert_eq!((normal, offset), (Vec3::Y, 2.0));
+    let Shape::Box { min, max } = scene.objects[2].shape else { panic!() };
+    assert_eq!((min, max), (Vec3::new(-1.0, -2.0, -3.0), Vec3::new(1.0, 2.0, 3.0)));
+    let Shape::Polygon { vertices } = &scene.objects[3].shape else { panic!() };
+    assert_eq!(vertices[2], Vec3::new(2.0, 2.0, 0.0));
+    let Shape::Triangle { vertices, normals: Some(normals) } = scene.objects[4].shape else { panic!() };
+    assert_eq!(vertices, [Vec3::ZERO, Vec3::X, Vec3::Y]);
+    assert_eq!(&normals[..2], &[Vec3::Z, Vec3::Z]);
+    approx::assert_abs_diff_eq!(normals[2], Vec3::new(FRAC_1_SQRT_2, 0.0, FRAC_1_SQRT_2), epsilon = ROUNDING);
+    let mesh_of = |i: usize| match &scene.objects[i].shape {
+        Shape::Mesh(mesh) => mesh.clone(),
+        _ => panic!("object {i} is not a mesh"),
+    };
+    // The quad is split into 2 triangles; icosphere(1) has 20·4 faces; the 8×6 torus 2·8·6.
+    assert_eq!(mesh_of(5).triangles.len(), 2);
+    assert_eq!((mesh_of(6).triangles.len(), mesh_of(6).positions.len()), (80, 42));
+    let torus = mesh_of(7);
+    assert_eq!(torus.triangles.len(), 96);
+    approx::assert_abs_diff_eq!(torus.bounds().1.x, 2.5, epsilon = ROUNDING); // R + r
+}
+
+#[test]
+fn orthographic_camera_and_defaults() {
+    let text = "[camera]\ntype = \"orthographic\"\neye = [0, 0, 10]\nat = [0, 0, 0]\nheight = 4\n";
+    let scene = parse(text).unwrap();
+    // up defaults to +y; the image to 320 × 240 on black without ambient light.
+    assert_eq!(
+        scene.camera,
+        Camera::Orthographic { eye: Vec3::new(0.0, 0.0, 10.0), at: Vec3::ZERO, up: Vec3::Y, height: 4.0 }
+    );
+    assert_eq!((scene.width, scene.height, scene.background, scene.ambient), (320, 240, BLACK, BLACK));
+    assert!(scene.lights.is_empty() && scene.materials.is_empty() && scene.objects.is_empty());
+}
+
+#[test]
+fn transform_steps_compose_left_to_right() {
+    // world_from_object = T(1, 0, 0)·Rz(90°)·S(2): the point (1, 0, 0) is
+    // scaled to (2, 0, 0), turned to (0, 2, 0), moved to (1, 2, 0).
+    let object = |steps: &str| {
+        let text = format!("{CAMERA}[[objects]]\ntype = \"cylinder\"\ntransform = [{steps}]\n");
+        parse(&text).unwrap().objects[0].transform.unwrap().world_from_object
+    };
+    let m = object("{ translate = [1, 0, 0] }, { rotate_z = 90 }, { scale = 2 }");
+    approx::assert_abs_diff_eq!(m.transform_point3(Vec3::X), Vec3::new(1.0, 2.0, 0.0), epsilon = ROUNDING);
+    // Half a turn about the diagonal (1, 1, 0) swaps x and y (the axis is normalised on load).
+    let m = object("{ rotate = { axis = [1, 1, 0], angle = 180 } }");
+    approx::assert_abs_diff_eq!(m.transform_point3(Vec3::X), Vec3::Y, epsilon = ROUNDING);
+    // Rotating +z by 30° about y (right-handed) gives (sin 30°, 0, cos 30°).
+    let m = object("{ rotate_y = 30 }");
+    let expected = Vec3::new(0.5, 0.0, (3.0 as Float).sqrt() / 2.0);
+    approx::assert_abs_diff_eq!(m.transform_point3(Vec3::Z), expected, epsilon = ROUNDING);
+    // +y turned 90° about x lands on +z; a row-major matrix's last column is the translation.
+    let m = object("{ rotate_x = 90 }, { matrix = [1,0,0,4, 0,1,0,5, 0,0,1,6, 0,0,0,1] }");
+    approx::assert_abs_diff_eq!(
+        m.transform_point3(Vec3::ZERO),
+        Vec3::new(4.0, -6.0, 5.0),
+        epsilon = 8.0 * ROUNDING
+    );
+    // An empty list is no transform at all.
+    let text = format!("{CAMERA}[[objects]]\ntype = \"cone\"\ntransform = []\n");
+    assert!(parse(&text).unwrap().objects[0].transform.is_none());
+}
+
+#[test]
+fn a_material_named_default_serves_objects_without_one() {
+    let text = format!("{CAMERA}[materials.default]\ndiffuse = [0, 1, 0]\n[[objects]]\ntype = \"cone\"\n");
+    let scene = parse(&text).unwrap();
+    assert_eq!(scene.materials.len(), 1, "no second default appended");
+    assert_eq!((scene.objects[0].material, scene.materials[0].diffuse), (0, Color::Y));
+}
+
+#[test]
+fn nan_and_infinite_literals_never_reach_the_scene() {
+    // TOML spells them nan, +nan, inf, -inf; each is refused wherever a number goes.
+    let cases = [
+        "[image]\nbackground = [nan, 0, 0]\n",
+        "[[lights]]\ntype = \"point\"\nposition = [0, -inf, 0]\n",
+        "[[lights]]\ntype = \"spot\"\nposition = [0, 1, 0]\ndirection = [0, -1, 0]\ninner = 10\nouter = nan\n",
+        "[materials.m]\nexponent = inf\n",
+        "[materials.m]\nior = +nan\n",
+        "[[objects]]\ntype = \"plane\"\nnormal = [0, 1, 0]\noffset = inf\n",
+        "[[objects]]\ntype = \"torus\"\nminor = nan\n",
+        "[[objects]]\ntype = \"cone\"\ntransform = [{ rotate_y = inf }]\n",
+        "[[objects]]\ntype = \"cone\"\ntransform = [{ matrix = [1,0,0,0, 0,1,0,0, 0,0,1,nan, 0,0,0,1] }]\n",
+    ];
+    for case in cases {
+        let message = error(&format!("{CAMERA}{case}"));
+        assert!(message.contains("finite"), "{case}: {message}");
+    }
+    // 10³⁹ is beyond f32: an error there, a fine radius in f64.
+    let huge = parse(&format!("{CAMERA}[[objects]]\ntype = \"sphere\"\ncenter = [0, 0, 0]\nradius = 1e39\n"));
+    assert_eq!(huge.is_err(), size_of::<Float>() == 4, "an error exactly in f32");
+}
+
+#[test]
+fn camera_errors() {
+    insta::assert_snapshot!(error("[camera]\ntype = \"perspective\"\neye = [0, 0, 5]\nat = [0, 0, 0]\nup = [0, 0, 2]\nfovy = 40\n"),
+        @"scenes/a.toml:5:6: up [0, 0, 2] is parallel to the view direction at − eye = [0, 0, -5] (or zero): the camera's roll is undefined");
+    insta::assert_snapshot!(error("[camera]\ntype = \"perspective\"\neye = [1, 2, 3]\nat = [1, 2, 3]\nfovy = 40\n"),
+        @"scenes/a.toml:4:6: at must differ from eye, both are [1, 2, 3]");
+    insta::assert_snapshot!(error("[camera]\ntype = \"perspective\"\neye = [0, 0, 5]\nat = [0, 0, 0]\nfovy = 180\n"),
+        @"scenes/a.toml:5:8: fovy must be in (0, 180) degrees, found 180");
+    insta::assert_snapshot!(error("[camera]\ntype = \"orthographic\"\neye = [0, 0, 5]\nat = [0, 0, 0]\nfovy = 40\n"),
+        @"scenes/a.toml:5:8: fovy is not a key of an orthographic camera (its keys: height)");
+    insta::assert_snapshot!(error("[image]\nwidth = 320\n"), @"scenes/a.toml:1:1: missing field `camera`");
+}
+
+#[test]
+fn object_errors() {
+    insta::assert_snapshot!(object_error("type = \"sphere\"\ncenter = [0, 0, 0]\nradius = -1\n"),
+        @"scenes/a.toml:9:10: radius must be > 0, found -1");
+    insta::assert_snapshot!(object_error("type = \"sphere\"\ncenter = [0, 0, 0]\nradius = nan\n"),
+        @"scenes/a.toml:9:10: radius must be a finite number, found NaN");
+    insta::assert_snapshot!(object_error("type = \"sphere\"\ncenter = [0, inf, 0]\nradius = 1\n"),
+        @"scenes/a.toml:8:10: center must hold finite numbers, found [0, inf, 0]");
+    insta::assert_snapshot!(object_error("type = \"sphere\"\ncenter = [0, 0]\nradius = 1\n"),
+        @"scenes/a.toml:8:10: center must be 3 numbers [x, y, z], found 2 numbers");
+    insta::assert_snapshot!(object_error("type = \"sphere\"\ncenter = [0, 0, 0]\n"),
+        @"scenes/a.toml:6:1: a sphere needs `radius`");
+    insta::assert_snapshot!(object_error("type = \"plane\"\nnormal = [0, 0, 0]\noffset = 1\n"),
+        @"scenes/a.toml:8:10: normal must be a non-zero vector, found [0, 0, 0]");
+    insta::assert_snapshot!(object_error("type = \"plane\"\nnormal = [0, 1, 0]\noffset = 1\nradius = 2\n"),
+        @"scenes/a.toml:10:10: radius is not a key of a plane (its keys: normal, offset)");
+    insta::assert_snapshot!(object_error("type = \"cube\"\n"),
+        @"scenes/a.toml:7:8: unknown object type `cube`, expected sphere, plane, box, polygon, triangle, mesh, icosphere, torus, cylinder or cone");
+    insta::assert_snapshot!(object_error("type = \"triangle\"\nvertices = [[0, 0, 0], [1, 1, 1], [2, 2, 2]]\n"),
+        @"scenes/a.toml:8:12: the triangle [0, 0, 0], [1, 1, 1], [2, 2, 2] is degenerate: its corners lie on a line");
+    insta::assert_snapshot!(object_error("type = \"polygon\"\nvertices = [[0, 0, 0], [1, 0, 0]]\n"),
+        @"scenes/a.toml:8:12: a polygon needs at least 3 vertices, found 2");
+    insta::assert_snapshot!(object_error("type = \"polygon\"\nvertices = [[0, 0, 0], [1, 0, 0], [2, 0, 0], [3, 0, 0]]\n"),
+        @"scenes/a.toml:8:12: the polygon's vertices all lie on a line");
+    // The unit square with its last corner lifted by 1/2: Newell's normal is
+    // (1, 0, 0)×(1, 1, 0) + (1, 1, 0)×(0, 1, 0.5) = (0.5, −0.5, 2), and vertex 1
+    // is 0.5/√4.5 = 0.2357 from the plane through vertex 0.
+    insta::assert_snapshot!(object_error("type = \"polygon\"\nvertices = [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0.5]]\n"),
+        @"scenes/a.toml:8:12: the polygon is not planar: vertex 1 [1, 0, 0] is 0.2357 away from its plane (through vertex 0, with Newell's normal)");
+    insta::assert_snapshot!(object_error("type = \"mesh\"\nfile = \"missing.obj\"\n"),
+        @"scenes/a.toml:8:8: mesh file `missing.obj`: cannot read scenes/missing.obj: No such file or directory (os error 2)");
+    insta::assert_snapshot!(object_error("type = \"cone\"\nmaterial = \"bleu\"\n[materials.red]\n[materials.blue]\n"),
+        @"scenes/a.toml:8:12: unknown material `bleu` (the scene's materials: red, blue)");
+    insta::assert_snapshot!(object_error("type = \"cone\"\ntransform = [{ translate = [1, 0, 0] }, { scale = [1, 0, 1] }]\n"),
+        @"scenes/a.toml:8:51: scale factors must be non-zero, found [1, 0, 1]");
+    insta::assert_snapshot!(object_error("type = \"cone\"\ntransform = [{ rotate_x = 90, rotate_y = 90 }]\n"),
+        @"scenes/a.toml:8:14: a transform step holds exactly one of translate, scale, rotate_x, rotate_y, rotate_z, rotate or matrix, found rotate_x and rotate_y");
+    insta::assert_snapshot!(object_error("type = \"cone\"\ntransform = [{ matrix = [1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,1,1] }]\n"),
+        @"scenes/a.toml:8:25: the matrix must be affine: its last row must be 0 0 0 1, found 0 0 1 1");
+    insta::assert_snapshot!(object_error("type = \"icosphere\"\nsubdivisions = 7\n"),
+        @"scenes/a.toml:8:16: subdivisions must be in 0..=6, found 7");
+}
+
+#[test]
+fn light_material_image_and_syntax_errors() {
+    insta::assert_snapshot!(error(&format!("{CAMERA}[[lights]]\ntype = \"directional\"\ndirection = [0, 0, 0]\n")),
+        @"scenes/a.toml:8:13: direction must be a non-zero vector, found [0, 0, 0]");
+    insta::assert_snapshot!(error(&format!("{CAMERA}[[lights]]\ntype = \"point\"\nposition = [0, 1, 0]\nattenuation = [0, 0, 0]\n")),
+        @"scenes/a.toml:9:15: attenuation [constant, linear, quadratic] must be ≥ 0 and not all 0, found [0, 0, 0]");
+    insta::assert_snapshot!(error(&format!("{CAMERA}[[lights]]\ntype = \"spot\"\nposition = [0, 1, 0]\ndirection = [0, -1, 0]\ninner = 10\nouter = 90\n")),
+        @"scenes/a.toml:11:9: outer must satisfy inner ≤ outer < 90 degrees, found inner 10, outer 90");
+    insta::assert_snapshot!(error(&format!("{CAMERA}[materials.m]\nmodel = \"cook-torrance\"\n")),
+        @"scenes/a.toml:7:9: unknown specular model `cook-torrance`, expected blinn or phong");
+    insta::assert_snapshot!(error(&format!("{CAMERA}[materials.m]\ndiffuse = [1, -1, 0]\n")),
+        @"scenes/a.toml:7:11: diffuse components must be ≥ 0, found [1, -1, 0]");
+    insta::assert_snapshot!(error(&format!("{CAMERA}[image]\nwidth = 0\n")),
+        @"scenes/a.toml:7:9: width must be in 1..=16384 pixels, found 0");
+    insta::assert_snapshot!(error(&format!("{CAMERA}[image]\nwidth = 1.5\n")),
+        @"scenes/a.toml:7:9: invalid type: floating point `1.5`, expected i64");
+    insta::assert_snapshot!(error(&format!("{CAMERA}[objects]\n")),
+        @"scenes/a.toml:6:1: invalid type: map, expected a sequence");
+    insta::assert_snapshot!(error("[camera\ntype = 1\n"), @"scenes/a.toml:1:8: unclosed table, expected `]`");
+}
+
+#[test]
+fn missing_scene_file_is_an_error_for_the_whole_file() {
+    let path = temp_dir("toml-missing").join("nowhere.toml");
+    let err = load_toml(&path).unwrap_err();
+    assert_eq!((err.line, err.column), (0, 0));
+    assert!(err.message.starts_with("cannot read the scene file"), "{err}");
+}
+
+#[test]
+fn the_example_in_scenes_md_loads() {
+    // The spec's own example, so the document stays true.
+    let doc = include_str!("../../SCENES.md");
+    let start = doc.find("```toml\n").expect("a toml block") + "```toml\n".len();
+    let example = &doc[start..start + doc[start..].find("```").unwrap()];
+    let scene = parse(example).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!((scene.lights.len(), scene.objects.len()), (3, 1));
+    assert_eq!(scene.objects[0].material, 0, "material red");
+}

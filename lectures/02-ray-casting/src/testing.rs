@@ -1,0 +1,161 @@
+//! Test support: a seeded pseudo-random generator and an accurate reference
+//! for ray–sphere roots (used by the tests of `sphere.rs` and `group.rs`).
+
+use raylab::{Float, Vec3};
+
+/// SplitMix64 (Steele, Lea, Flood 2014): a tiny seeded generator, so the
+/// tests draw the same rays on every machine without the `rand` crate.
+pub struct Rng(u64);
+
+impl Rng {
+    pub fn new(seed: u64) -> Self {
+        Self(seed)
+    }
+
+    pub fn next_u64(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^ (z >> 31)
+    }
+
+    /// Uniform in [0, 1), with 53 random bits.
+    pub fn unit(&mut self) -> f64 {
+        (self.next_u64() >> 11) as f64 / (1u64 << 53) as f64
+    }
+
+    /// Uniform in [lo, hi).
+    pub fn range(&mut self, lo: f64, hi: f64) -> Float {
+        (lo + (hi - lo) * self.unit()) as Float
+    }
+
+    /// Uniform on the unit sphere (rejection from the cube), rounded to `Float`.
+    pub fn direction(&mut self) -> Vec3 {
+        loop {
+            let v = [self.unit() * 2.0 - 1.0, self.unit() * 2.0 - 1.0, self.unit() * 2.0 - 1.0];
+            let len2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+            if len2 > 1e-4 && len2 <= 1.0 {
+                let len = len2.sqrt();
+                return Vec3::new((v[0] / len) as Float, (v[1] / len) as Float, (v[2] / len) as Float);
+            }
+        }
+    }
+
+    /// Uniform in the ball of radius `radius` around the origin.
+    pub fn in_ball(&mut self, radius: f64) -> Vec3 {
+        self.direction() * (radius * self.unit().cbrt()) as Float
+    }
+}
+
+/// A `Float` widened to `f64` without rounding.
+// With the kit's `f64` feature this cast is f64 → f64, which clippy flags.
+#[allow(clippy::unnecessary_cast)]
+pub fn to_f64(x: Float) -> f64 {
+    x as f64
+}
+
+/// A `Float` vector widened to `f64` without rounding.
+pub fn wide(v: Vec3) -> [f64; 3] {
+    [to_f64(v.x), to_f64(v.y), to_f64(v.z)]
+}
+
+/// The roots t₀ ≤ t₁ of |o + t·d − c|² = r², accurate to about one f64
+/// rounding whatever the precision of `Float`: the inputs are widened to f64
+/// exactly, the geometric solution gives a first guess, and two Newton steps
+/// on g(t) = |o − c + t·d|² − r² whose residual is evaluated in double-double
+/// arithmetic (error-free products by fused multiply–add) polish it.
+/// `None` when the line misses the sphere (in f64).
+pub fn sphere_roots_reference(origin: Vec3, dir: Vec3, center: Vec3, radius: Float) -> Option<(f64, f64)> {
+    let (o, d, c, r) = (wide(origin), wide(dir), wide(center), to_f64(radius));
+    let f = [o[0] - c[0], o[1] - c[1], o[2] - c[2]];
+    let dot = |u: [f64; 3], v: [f64; 3]| u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+    // First guess: the geometric solution in f64.
+    let a = dot(d, d);
+    let t_ca = -dot(f, d) / a;
+    let closest = [f[0] + t_ca * d[0], f[1] + t_ca * d[1], f[2] + t_ca * d[2]];
+    let h2 = r * r - dot(closest, closest);
+    if h2 < 0.0 {
+        return None;
+    }
+    let t_hc = (h2 / a).sqrt();
+    let polish = |mut t: f64| {
+        for _ in 0..2 {
+            let (g, slope) = residual(f, d, r, t);
+            if slope != 0.0 {
+                t -= g / slope;
+            }
+        }
+        t
+    };
+    Some((polish(t_ca - t_hc), polish(t_ca + t_hc)))
+}
+
+/// g(t) = |f + t·d|² − r² in double-double arithmetic, and g'(t) = 2 d·(f + t·d).
+fn residual(f: [f64; 3], d: [f64; 3], r: f64, t: f64) -> (f64, f64) {
+    let mut sum = neg(two_prod(r, r));
+    let mut slope = 0.0;
+    for i in 0..3 {
+        // p = f + t·d as an unevaluated sum hi + lo.
+        let (td, td_err) = two_prod(t, d[i]);
+        let (hi, s_err) = two_sum(f[i], td);
+        let lo = s_err + td_err;
+        // p² ≈ hi² + 2·hi·lo (lo² is below the last bit).
+        let (sq, sq_err) = two_prod(hi, hi);
+        sum = add(sum, (sq, sq_err + 2.0 * hi * lo));
+        slope += 2.0 * d[i] * (hi + lo);
+    }
+    (sum.0 + sum.1, slope)
+}
+
+fn two_prod(a: f64, b: f64) -> (f64, f64) {
+    let p = a * b;
+    (p, a.mul_add(b, -p))
+}
+
+fn two_sum(a: f64, b: f64) -> (f64, f64) {
+    let s = a + b;
+    let bb = s - a;
+    (s, (a - (s - bb)) + (b - bb))
+}
+
+fn add(x: (f64, f64), y: (f64, f64)) -> (f64, f64) {
+    let (s, e) = two_sum(x.0, y.0);
+    let e = e + x.1 + y.1;
+    two_sum(s, e)
+}
+
+fn neg(x: (f64, f64)) -> (f64, f64) {
+    (-x.0, -x.1)
+}
+
+/// One unit in the last place of `x` in `Float` (|x|·ε, the spacing near x).
+pub fn ulp(x: f64) -> f64 {
+    x.abs() * to_f64(Float::EPSILON)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn reference_roots_of_a_known_sphere() {
+        // Unit sphere at the origin, ray from (0, 0, 5) along −z: roots 5 ∓ 1.
+        let roots = sphere_roots_reference(Vec3::new(0.0, 0.0, 5.0), -Vec3::Z, Vec3::ZERO, 1.0);
+        assert_eq!(roots, Some((4.0, 6.0)));
+    }
+
+    #[test]
+    fn reference_is_accurate_where_plain_f64_cancels() {
+        // Radius 1 at distance 1e8 along +x (exact in f32), ray along +x offset by y = 0.6
+        // (rounded to Float): roots 1e8 ∓ √(1 − y²). In plain f64, |c − o|² − t_ca² would
+        // lose y² entirely (the spacing of f64 near 1e16 is 2).
+        let y = 0.6 as Float;
+        let (t0, t1) = sphere_roots_reference(Vec3::new(0.0, y, 0.0), Vec3::X, Vec3::new(1e8, 0.0, 0.0), 1.0)
+            .expect("the ray passes 0.6 from the centre");
+        let h = (1.0 - to_f64(y) * to_f64(y)).sqrt();
+        // Tolerance 3e-8: two roundings of f64 near 1e8 (spacing 1.5e-8).
+        assert!((t0 - (1e8 - h)).abs() <= 3e-8, "{t0}");
+        assert!((t1 - (1e8 + h)).abs() <= 3e-8, "{t1}");
+    }
+}
