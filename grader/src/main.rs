@@ -1,1 +1,117 @@
-fn main() {}
+//! `grader`: the raylab workbench command.
+//!
+//! `cargo run -p grader` renders every lecture's scenes with the reference
+//! (or the student's) code and compares them with the lecture's snapshots;
+//! `grader render SCENE -o OUT.png` renders any TOML or MIT 6.837 scene;
+//! `grader bless` regenerates the snapshots from the reference.
+
+mod lectures;
+mod shade;
+
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand, ValueEnum};
+
+#[derive(Parser)]
+#[command(name = "grader", about = "The raylab workbench: render scenes, compare with snapshots, bless.")]
+struct Cli {
+    #[command(subcommand)]
+    command: Option<Command>,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Render a TOML or MIT 6.837 scene with the furthest lecture available.
+    Render(RenderArgs),
+    /// Render every lecture's scenes and compare them with the snapshots (the default).
+    Check {
+        /// Only this lecture (e.g. 02).
+        lecture: Option<String>,
+    },
+    /// Regenerate the lectures' snapshots (PNG and AOVs) from the reference.
+    Bless {
+        /// Only this lecture (e.g. 02).
+        lecture: Option<String>,
+    },
+}
+
+#[derive(clap::Args)]
+struct RenderArgs {
+    /// The scene file (`.toml`, or any other name for the 6.837 format).
+    scene: PathBuf,
+    /// Where to write the image (PNG, or OpenEXR for depth and normal AOVs).
+    #[arg(short, long, default_value = "out.png")]
+    output: PathBuf,
+    /// Image size WxH (overrides the scene's).
+    #[arg(long, value_parser = parse_size)]
+    size: Option<(u32, u32)>,
+    /// Write an arbitrary output variable instead of the shaded image.
+    #[arg(long, value_enum)]
+    aov: Option<Aov>,
+    /// Print ray statistics.
+    #[arg(long)]
+    stats: bool,
+    /// With --stats: print them as JSON.
+    #[arg(long, requires = "stats")]
+    json: bool,
+}
+
+/// Arbitrary output variables.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum Aov {
+    /// The object-id image (scene signature), a colour PNG.
+    Id,
+    /// Distance from the eye along the unit primary ray, 0 where nothing is hit (float EXR).
+    Depth,
+    /// Unit normal facing the camera, 0 where nothing is hit (float EXR).
+    Normal,
+}
+
+fn parse_size(s: &str) -> Result<(u32, u32), String> {
+    let (w, h) =
+        s.split_once(['x', 'X']).ok_or_else(|| format!("expected WxH, e.g. 320x240, found {s:?}"))?;
+    let parse = |v: &str| match v.trim().parse::<u32>() {
+        Ok(n) if (1..=16384).contains(&n) => Ok(n),
+        _ => Err(format!("expected a size from 1 to 16384, found {v:?}")),
+    };
+    Ok((parse(w)?, parse(h)?))
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match cli.command.unwrap_or(Command::Check { lecture: None }) {
+        Command::Render(args) => render(&args),
+        Command::Check { lecture } => lectures::check(lecture.as_deref()),
+        Command::Bless { lecture } => lectures::bless(lecture.as_deref()),
+    };
+    match result {
+        Ok(code) => code,
+        Err(message) => {
+            eprintln!("error: {message}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+fn render(args: &RenderArgs) -> Result<ExitCode, String> {
+    let mut scene = raylab::scene::load(&args.scene).map_err(|e| e.to_string())?;
+    if let Some((w, h)) = args.size {
+        scene.width = w;
+        scene.height = h;
+    }
+    let (image, stats) = shade::render_scene(&scene, args.aov)?;
+    let write = match args.aov {
+        Some(Aov::Depth | Aov::Normal) => image.save_exr(&args.output),
+        _ => image.save_png(&args.output),
+    };
+    write.map_err(|e| e.to_string())?;
+    if args.stats {
+        if args.json {
+            println!("{}", stats.to_json());
+        } else {
+            print!("{stats}");
+        }
+    }
+    Ok(ExitCode::SUCCESS)
+}

@@ -26,8 +26,15 @@ impl Hit {
     /// A hit at parameter `t` of `ray` on a surface whose outward normal there
     /// is `outward_normal` (any length, not zero): the normal is normalised
     /// and flipped to face against the ray, and `front_face` records which.
+    ///
+    /// A zero or non-finite normal is a bug in the caller (debug builds
+    /// stop on it); release builds substitute +z rather than spread a NaN.
     pub fn new(ray: &Ray, t: Float, outward_normal: Vec3) -> Self {
-        let n = outward_normal.normalize();
+        debug_assert!(
+            outward_normal.is_finite() && outward_normal != Vec3::ZERO,
+            "Hit::new needs a non-zero finite normal, found {outward_normal}"
+        );
+        let n = outward_normal.try_normalize().unwrap_or(Vec3::Z);
         let front_face = ray.dir.dot(n) < 0.0;
         Self {
             t,

@@ -1,0 +1,167 @@
+//! Helpers shared by the unit tests: a seeded random generator, f64 vector
+//! arithmetic for independent reference computations (plain arrays, so the
+//! reference never goes through the `Float` code under test), angle measures
+//! and a reference unit sphere for the transform tests.
+
+use raylab::scene::Transform;
+use raylab::{Float, Hit, Interval, Mat4, Ray, Vec3};
+
+/// Machine epsilon of the precision under test.
+pub const EPS: Float = Float::EPSILON;
+
+/// A small, seeded generator (SplitMix64): the same rays on every run.
+pub struct Rng(u64);
+
+impl Rng {
+    pub fn new(seed: u64) -> Self {
+        Self(seed)
+    }
+
+    /// Uniform in [0, 1).
+    pub fn next_f64(&mut self) -> f64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^= z >> 31;
+        (z >> 11) as f64 / (1u64 << 53) as f64
+    }
+
+    /// Uniform in [lo, hi).
+    pub fn range(&mut self, lo: f64, hi: f64) -> f64 {
+        lo + (hi - lo) * self.next_f64()
+    }
+
+    /// A point uniform in the box [lo, hi]³ (rounded to `Float`).
+    pub fn vec_in(&mut self, lo: f64, hi: f64) -> Vec3 {
+        Vec3::new(self.range(lo, hi) as Float, self.range(lo, hi) as Float, self.range(lo, hi) as Float)
+    }
+}
+
+/// A vector as f64 numbers (exact: every `Float` is an f64).
+pub fn d3(v: Vec3) -> [f64; 3] {
+    [v.x as f64, v.y as f64, v.z as f64]
+}
+
+pub fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+pub fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+}
+
+pub fn length(a: [f64; 3]) -> f64 {
+    dot(a, a).sqrt()
+}
+
+pub fn unit(a: [f64; 3]) -> [f64; 3] {
+    let l = length(a);
+    [a[0] / l, a[1] / l, a[2] / l]
+}
+
+/// The angle between two directions, in radians, as atan2(|a × b|, a·b):
+/// accurate for tiny angles, where acos(a·b) loses half the digits.
+pub fn angle_between(a: [f64; 3], b: [f64; 3]) -> f64 {
+    length(cross(a, b)).atan2(dot(a, b))
+}
+
+/// The angle between a computed normal and an f64 reference direction.
+pub fn angle_to(n: Vec3, reference: [f64; 3]) -> f64 {
+    angle_between(d3(n), reference)
+}
+
+/// v rotated by `angle` about the unit `axis` (Rodrigues), in f64:
+/// v cos θ + (k × v) sin θ + k (k·v)(1 − cos θ).
+pub fn rotate(v: [f64; 3], axis: [f64; 3], angle: f64) -> [f64; 3] {
+    let (s, c) = angle.sin_cos();
+    let kxv = cross(axis, v);
+    let kv = dot(axis, v);
+    [0, 1, 2].map(|i| v[i] * c + kxv[i] * s + axis[i] * kv * (1.0 - c))
+}
+
+/// An ellipsoid solved directly in world space, in f64: centre `center`,
+/// semi-axes `semi` along the coordinate axes turned by `angle` about the
+/// unit `axis`, i.e. Σ (uᵢ/sᵢ)² = 1 with u = R⁻¹(p − center). Returns the
+/// first t > 0 of the ray and the unit outward normal there, the gradient
+/// R·(u_x/a², u_y/b², u_z/c²). Stable roots and the discriminant
+/// a − |u₀ × v|² (Lagrange) keep f64 well ahead of the `Float` code.
+pub fn ellipsoid_f64(
+    origin: [f64; 3],
+    dir: [f64; 3],
+    center: [f64; 3],
+    semi: [f64; 3],
+    axis: [f64; 3],
+    angle: f64,
+) -> Option<(f64, [f64; 3])> {
+    let to_local = |v: [f64; 3]| rotate(v, axis, -angle);
+    let u0 = to_local([0, 1, 2].map(|i| origin[i] - center[i]));
+    let v = to_local(dir);
+    let (u0, v) = ([0, 1, 2].map(|i| u0[i] / semi[i]), [0, 1, 2].map(|i| v[i] / semi[i]));
+    let (a, b, c) = (dot(v, v), dot(u0, v), dot(u0, u0) - 1.0);
+    let m = cross(u0, v);
+    let disc = a - dot(m, m);
+    if disc < 0.0 {
+        return None;
+    }
+    let q = -(b + disc.sqrt().copysign(b));
+    let (t0, t1) = (q / a, c / q);
+    let t = [t0.min(t1), t0.max(t1)].into_iter().find(|&t| t > 0.0)?;
+    let gradient = [0, 1, 2].map(|i| (u0[i] + t * v[i]) / semi[i]);
+    Some((t, unit(rotate(gradient, axis, angle))))
+}
+
+/// A unit sphere at the origin, written independently of lecture 02 so that
+/// these tests check the transform machinery alone: stable roots of
+/// |o + t d|² = 1 with the discriminant a − |o × d|² (Lagrange's identity; it
+/// keeps its digits when a squashing transform puts the object-space origin
+/// a thousand radii away), outward normal = the hit point.
+pub fn unit_sphere(ray: &Ray, range: Interval) -> Option<Hit> {
+    let (o, d) = (ray.origin, ray.dir);
+    let a = d.dot(d);
+    let b = o.dot(d);
+    let c = o.dot(o) - 1.0;
+    let disc = a - o.cross(d).length_squared();
+    if disc < 0.0 {
+        return None;
+    }
+    let q = -(b + disc.sqrt().copysign(b));
+    let (t0, t1) = if q == 0.0 { (0.0, 0.0) } else { (q / a, c / q) };
+    let t = [t0.min(t1), t0.max(t1)].into_iter().find(|&t| range.contains(t))?;
+    Some(Hit::new(ray, t, ray.at(t)))
+}
+
+/// The placement T(center)·R(axis, angle)·S(semi) of a unit sphere that makes
+/// the ellipsoid of [`ellipsoid_f64`], rounded to `Float`.
+pub fn ellipsoid_transform(center: [f64; 3], semi: [f64; 3], axis: [f64; 3], angle: f64) -> Transform {
+    let v = |a: [f64; 3]| Vec3::new(a[0] as Float, a[1] as Float, a[2] as Float);
+    let world_from_object = Mat4::from_translation(v(center))
+        * Mat4::from_axis_angle(v(axis), angle as Float)
+        * Mat4::from_scale(v(semi));
+    Transform::new(world_from_object).expect("an invertible placement")
+}
+
+/// How far the exact normal of [`ellipsoid_f64`] moves when the ray origin
+/// moves by one rounding (ε·(|origin|∞ + |center|∞) along each axis): the
+/// error that no `Float` computation can avoid. Rays with a large value are
+/// ill-conditioned, not badly computed.
+pub fn ellipsoid_normal_sensitivity(
+    origin: [f64; 3],
+    dir: [f64; 3],
+    center: [f64; 3],
+    semi: [f64; 3],
+    axis: [f64; 3],
+    angle: f64,
+) -> f64 {
+    let Some((_, n)) = ellipsoid_f64(origin, dir, center, semi, axis, angle) else { return f64::INFINITY };
+    let max_abs = |a: [f64; 3]| a.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    let delta = EPS as f64 * (max_abs(origin) + max_abs(center));
+    (0..3)
+        .map(|k| {
+            let mut moved = origin;
+            moved[k] += delta;
+            ellipsoid_f64(moved, dir, center, semi, axis, angle)
+                .map_or(f64::INFINITY, |(_, m)| angle_between(m, n))
+        })
+        .fold(0.0, f64::max)
+}
