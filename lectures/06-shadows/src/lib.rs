@@ -1,0 +1,27 @@
+//! Lecture 06: shadows.
+//!
+//! A point is lit by a light only if nothing lies between them: a shadow ray
+//! from the point toward the light answers it ([`occluded`], any hit, no
+//! farther than the light). The ray must start just off the surface, or the
+//! surface shadows itself in speckles (shadow acne): a fixed epsilon fails
+//! far from the origin and for small objects, an offset scaled to the
+//! rounding error of the point (from the point and the origin of the ray that
+//! found it) does not ([`offset_origin`]). Transparent
+//! blockers either block or filter the light by their transparent colour
+//! ([`ShadowMode`], [`transmittance`]), and [`shade_with_shadows`] traces
+//! only the shadow rays the scene requires. Book: chapter 6.
+
+mod occlusion;
+mod offset;
+#[cfg(test)]
+mod scenes;
+mod shade;
+#[cfg(test)]
+mod testing;
+
+pub use occlusion::{LIGHT_MARGIN, MAX_BLOCKERS, ShadowMode, occluded, transmittance};
+pub use offset::{
+    NAIVE_EPSILON, OFFSET_FLOOR, OFFSET_SCALE, offset_origin, offset_origin_fixed_normal,
+    offset_origin_fixed_t,
+};
+pub use shade::{Surface, shade_with_shadows};
