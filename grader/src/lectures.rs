@@ -12,6 +12,8 @@ use raylab::compare::compare;
 use raylab::{Color, Image};
 
 use crate::Aov;
+use l08_ray_tree::TraceSettings;
+
 use crate::shade::render_scene;
 
 /// A pixel differs when one of its 8-bit sRGB channels moves by more than
@@ -88,7 +90,7 @@ pub fn check_scene(file: &SceneFile) -> Verdict {
         Ok(s) => s,
         Err(e) => return Verdict::Failed(e.to_string()),
     };
-    let yours = match render_scene(&scene, None) {
+    let yours = match render_scene(&scene, None, &TraceSettings::default()) {
         Ok((image, _)) => image,
         Err(e) => return Verdict::Failed(e),
     };
@@ -155,12 +157,22 @@ pub fn check(only: Option<&str>) -> Result<ExitCode, String> {
 pub fn bless(only: Option<&str>) -> Result<ExitCode, String> {
     for file in scene_files(only)? {
         let scene = raylab::scene::load(&file.scene).map_err(|e| e.to_string())?;
+        let settings = TraceSettings::default();
         std::fs::create_dir_all(&file.snapshots).map_err(|e| format!("{}: {e}", file.snapshots.display()))?;
         let error = |e: raylab::ImageError| e.to_string();
-        render_scene(&scene, None)?.0.save_png(file.snapshot(".png")).map_err(error)?;
-        render_scene(&scene, Some(Aov::Id))?.0.save_png(file.snapshot(".id.png")).map_err(error)?;
-        render_scene(&scene, Some(Aov::Depth))?.0.save_exr(file.snapshot(".depth.exr")).map_err(error)?;
-        render_scene(&scene, Some(Aov::Normal))?.0.save_exr(file.snapshot(".normal.exr")).map_err(error)?;
+        render_scene(&scene, None, &settings)?.0.save_png(file.snapshot(".png")).map_err(error)?;
+        render_scene(&scene, Some(Aov::Id), &settings)?
+            .0
+            .save_png(file.snapshot(".id.png"))
+            .map_err(error)?;
+        render_scene(&scene, Some(Aov::Depth), &settings)?
+            .0
+            .save_exr(file.snapshot(".depth.exr"))
+            .map_err(error)?;
+        render_scene(&scene, Some(Aov::Normal), &settings)?
+            .0
+            .save_exr(file.snapshot(".normal.exr"))
+            .map_err(error)?;
         println!("blessed {}/{}", file.lecture, file.name());
     }
     Ok(ExitCode::SUCCESS)

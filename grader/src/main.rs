@@ -12,6 +12,9 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand, ValueEnum};
+use l06_shadows::ShadowMode;
+use l08_ray_tree::TraceSettings;
+use raylab::Float;
 
 #[derive(Parser)]
 #[command(name = "grader", about = "The raylab workbench: render scenes, compare with snapshots, bless.")]
@@ -55,6 +58,36 @@ struct RenderArgs {
     /// With --stats: print them as JSON.
     #[arg(long, requires = "stats")]
     json: bool,
+    /// The deepest level of the ray tree (6.837's -bounces).
+    #[arg(long, default_value_t = TraceSettings::default().max_depth)]
+    depth: u32,
+    /// The smallest contribution a ray may carry to be traced (6.837's -weight).
+    #[arg(long, default_value_t = TraceSettings::default().min_weight)]
+    weight: Float,
+    /// Trace no shadow rays.
+    #[arg(long)]
+    no_shadows: bool,
+    /// Transparent objects filter the light by their transparent colour instead of blocking it.
+    #[arg(long)]
+    transparent_shadows: bool,
+    /// Split transparent surfaces between reflection and refraction by the exact Fresnel reflectance.
+    #[arg(long)]
+    fresnel: bool,
+    /// Print the ray tree of pixel X,Y (0,0 is the top left).
+    #[arg(long, value_parser = parse_pixel)]
+    tree: Option<(u32, u32)>,
+}
+
+impl RenderArgs {
+    fn settings(&self) -> TraceSettings {
+        TraceSettings {
+            max_depth: self.depth,
+            min_weight: self.weight,
+            shadows: !self.no_shadows,
+            shadow_mode: if self.transparent_shadows { ShadowMode::Transmissive } else { ShadowMode::Opaque },
+            fresnel: self.fresnel,
+        }
+    }
 }
 
 /// Arbitrary output variables.
@@ -66,6 +99,12 @@ pub enum Aov {
     Depth,
     /// Unit normal facing the camera, 0 where nothing is hit (float EXR).
     Normal,
+}
+
+fn parse_pixel(s: &str) -> Result<(u32, u32), String> {
+    let (x, y) = s.split_once(',').ok_or_else(|| format!("expected X,Y, e.g. 100,75, found {s:?}"))?;
+    let parse = |v: &str| v.trim().parse::<u32>().map_err(|_| format!("expected a pixel index, found {v:?}"));
+    Ok((parse(x)?, parse(y)?))
 }
 
 fn parse_size(s: &str) -> Result<(u32, u32), String> {
@@ -100,7 +139,15 @@ fn render(args: &RenderArgs) -> Result<ExitCode, String> {
         scene.width = w;
         scene.height = h;
     }
-    let (image, stats) = shade::render_scene(&scene, args.aov)?;
+    let settings = args.settings();
+    if let Some(pixel) = args.tree {
+        let (color, tree) = shade::pixel_tree(&scene, pixel, &settings)?;
+        println!(
+            "pixel ({}, {}): colour ({:.3}, {:.3}, {:.3})\n{tree}",
+            pixel.0, pixel.1, color.x, color.y, color.z
+        );
+    }
+    let (image, stats) = shade::render_scene(&scene, args.aov, &settings)?;
     let write = match args.aov {
         Some(Aov::Depth | Aov::Normal) => image.save_exr(&args.output),
         _ => image.save_png(&args.output),

@@ -1,47 +1,43 @@
-//! The tracer assembled from every lecture available: cameras (01),
-//! intersections (02–04) and, until the shading lectures land, a plain
-//! diffuse shade: k_d·(Iₐ + I_L·max(N·L, 0)) from the first light, or the
-//! flat diffuse colour when the scene has no light (6.837 assignment 1).
+//! The tracer assembled from every lecture: cameras (01), intersections
+//! (02–04), and the Whitted tracer of lecture 08 with the shading, shadows,
+//! reflection and refraction of lectures 05–07.
 
 use l01_transforms::Camera;
 use l04_quadrics_transforms::BruteForce;
-use raylab::scene::{LightKind, Scene};
-use raylab::stats::{Counter, RayStats, count};
-use raylab::{Color, Hit, Image, Intersector, render};
+use l08_ray_tree::{RayTree, TraceSettings, World, trace_recorded};
+use raylab::stats::{RayStats, measure};
+use raylab::{Color, Image, Scene};
 
 use crate::Aov;
 
-/// Renders `scene` at its size: the shaded image, or the AOV asked for.
-pub fn render_scene(scene: &Scene, aov: Option<Aov>) -> Result<(Image, RayStats), String> {
+/// Renders `scene` at its size: the traced image, or the AOV asked for.
+pub fn render_scene(
+    scene: &Scene,
+    aov: Option<Aov>,
+    settings: &TraceSettings,
+) -> Result<(Image, RayStats), String> {
     let camera = Camera::from_scene(&scene.camera, scene.width, scene.height).map_err(|e| e.to_string())?;
-    let world = BruteForce { objects: &scene.objects };
+    let objects = BruteForce::new(&scene.objects);
     let (w, h) = (scene.width, scene.height);
     Ok(match aov {
-        Some(Aov::Id) => raylab::stats::measure(|| l02_ray_casting::object_id_image(&camera, &world, w, h)),
-        Some(Aov::Depth) => raylab::stats::measure(|| l02_ray_casting::depth_image(&camera, &world, w, h)),
-        Some(Aov::Normal) => raylab::stats::measure(|| l02_ray_casting::normal_image(&camera, &world, w, h)),
-        None => render::render_image(w, h, |x, y| {
-            count(Counter::PrimaryRays);
-            let ray = camera.pixel_ray(x, y, w, h);
-            match world.closest_hit(&ray, camera.t_range()) {
-                Some(hit) => diffuse(scene, &hit),
-                None => scene.background,
-            }
-        }),
+        Some(Aov::Id) => measure(|| l02_ray_casting::object_id_image(&camera, &objects, w, h)),
+        Some(Aov::Depth) => measure(|| l02_ray_casting::depth_image(&camera, &objects, w, h)),
+        Some(Aov::Normal) => measure(|| l02_ray_casting::normal_image(&camera, &objects, w, h)),
+        None => l08_ray_tree::render(&World::new(scene, &objects), &camera, w, h, settings),
     })
 }
 
-/// k_d·(Iₐ + I_L·max(N·L, 0)) for the first light; k_d alone without lights.
-fn diffuse(scene: &Scene, hit: &Hit) -> Color {
-    let kd = scene.materials[hit.material].diffuse;
-    let Some(light) = scene.lights.first() else {
-        return kd;
-    };
-    let to_light = match light.kind {
-        LightKind::Directional { direction } => -direction,
-        LightKind::Point { position, .. } | LightKind::Spot { position, .. } => {
-            (position - hit.point).normalize_or_zero()
-        }
-    };
-    kd * (scene.ambient + light.color * hit.normal.dot(to_light).max(0.0))
+/// The ray tree of pixel (x, y) of `scene`, and the pixel's colour.
+pub fn pixel_tree(
+    scene: &Scene,
+    (x, y): (u32, u32),
+    settings: &TraceSettings,
+) -> Result<(Color, RayTree), String> {
+    if x >= scene.width || y >= scene.height {
+        return Err(format!("pixel ({x}, {y}) is outside the {}×{} image", scene.width, scene.height));
+    }
+    let camera = Camera::from_scene(&scene.camera, scene.width, scene.height).map_err(|e| e.to_string())?;
+    let objects = BruteForce::new(&scene.objects);
+    let ray = camera.pixel_ray(x, y, scene.width, scene.height);
+    Ok(trace_recorded(&World::new(scene, &objects), &ray, settings))
 }

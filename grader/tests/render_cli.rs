@@ -71,17 +71,27 @@ fn stats_json_has_the_documented_keys_and_counts() {
     let dir = temp_dir("stats");
     let scene = write_scene(&dir);
     let png = dir.join("out.png");
-    let out =
-        grader(&["render", scene.to_str().unwrap(), "--stats", "--json", "--size", "4x3", "-o", png.to_str().unwrap()]);
+    let out = grader(&[
+        "render",
+        scene.to_str().unwrap(),
+        "--stats",
+        "--json",
+        "--size",
+        "4x3",
+        "-o",
+        png.to_str().unwrap(),
+    ]);
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
-    // 4×3 pixels, one primary ray each, one object tested per ray, nothing else.
+    // 4×3 pixels, one primary ray each. Pixel centres sit at world x = ±2/3, ±2 and
+    // y = 0, ±4/3 (view 16/3 × 4): only (±2/3, 0) fall inside the unit disc, and each of
+    // those two lit points casts one shadow ray. One object tested per ray: 12 + 2.
     insta::assert_snapshot!(String::from_utf8_lossy(&out.stdout), @r#"
     {
       "rays.primary": 12,
-      "rays.shadow": 0,
+      "rays.shadow": 2,
       "rays.reflection": 0,
       "rays.refraction": 0,
-      "intersection_tests": 12
+      "intersection_tests": 14
     }
     "#);
     let image = Image::load_png(&png).unwrap();
@@ -111,7 +121,8 @@ fn every_mit6837_scene_of_assignments_1_to_4_renders() {
     for entry in std::fs::read_dir(&dir).unwrap() {
         let path = entry.unwrap().path();
         let name = path.file_name().unwrap().to_string_lossy().into_owned();
-        if !(name.starts_with("scene") && name.ends_with(".txt")) || !matches!(&name[5..6], "1" | "2" | "3" | "4") {
+        let assignment = name.strip_prefix("scene").and_then(|rest| rest.chars().next());
+        if !(name.ends_with(".txt") && matches!(assignment, Some('1'..='4'))) {
             continue;
         }
         let png = out_dir.join(name.replace(".txt", ".png"));

@@ -308,12 +308,16 @@ impl<'a> Parser<'a> {
                 "no camera: expected an OrthographicCamera or a PerspectiveCamera",
             )
         })?;
+        // Assignment 1 has no lights and no shading: an object shows its diffuse
+        // colour. A file without a `Lights` block (and without an ambient light)
+        // gets a white ambient light, so the shading equation gives exactly that.
+        let unlit = !seen.iter().any(|t| t.text == "Lights") && ambient == BLACK;
         Ok(Scene {
             camera,
             width: 200,
             height: 200,
             background,
-            ambient,
+            ambient: if unlit { WHITE } else { ambient },
             lights,
             materials: self.materials,
             objects: self.objects,

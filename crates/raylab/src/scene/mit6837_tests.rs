@@ -423,3 +423,20 @@ fn huge_counts_and_deep_nesting_are_errors_not_crashes() {
     let deep = format!("{CAMERA}{}", "Group { numObjects 1 ".repeat(10_000));
     assert!(error(&deep).contains(&format!("nest deeper than {MAX_DEPTH} levels")));
 }
+
+#[test]
+fn a_file_without_lights_shows_flat_diffuse_colour_through_a_white_ambient_light() {
+    // Assignment 1 renders each object in its diffuse colour: k_a·I_a = k_d needs I_a = 1.
+    let camera = "OrthographicCamera { center 0 0 10 direction 0 0 -1 up 0 1 0 size 5 }";
+    let group = "Group { numObjects 1 Sphere { center 0 0 0 radius 1 } }";
+    let unlit = parse(&format!("{camera} Background {{ color 0 0 0 }} {group}")).unwrap();
+    assert_eq!((unlit.ambient, unlit.lights.len()), (WHITE, 0));
+    // With lights, or with an ambient light of its own, a file keeps what it says.
+    let lit = parse(&format!(
+        "{camera} Lights {{ numLights 1 DirectionalLight {{ direction 0 0 -1 color 1 1 1 }} }} {group}"
+    ))
+    .unwrap();
+    assert_eq!(lit.ambient, BLACK);
+    let dim = parse(&format!("{camera} Background {{ ambientLight 0.2 0.2 0.2 }} {group}")).unwrap();
+    assert_eq!(dim.ambient, Color::splat(0.2));
+}
