@@ -12,9 +12,7 @@ use raylab::compare::compare;
 use raylab::{Color, Image};
 
 use crate::Aov;
-use l08_ray_tree::TraceSettings;
-
-use crate::shade::render_scene;
+use crate::shade::{render_scene, scene_settings};
 
 /// A pixel differs when one of its 8-bit sRGB channels moves by more than
 /// this many steps: the f32 and f64 builds differ by a step or two where
@@ -25,6 +23,21 @@ pub const CHANNEL_THRESHOLD: u8 = 2;
 /// f64 disagree on hit or miss only for pixel rays within a few ulp of a
 /// silhouette (measured: well under 0.1 % on the lecture scenes).
 pub const MAX_FRACTION_OVER: f64 = 0.002;
+
+/// Scenes that test precision itself, with the fraction they may differ by
+/// and why. `06-shadows/far-from-origin` sits at 10⁴, where an f32 ulp is
+/// 0.001: the f32 snapshot's highlight (normals from p − c) and shadow edges
+/// are off by that much, and the f64 build draws them more accurately —
+/// measured 0.41 % of pixels apart.
+const PRECISION_SCENES: &[(&str, &str, f64)] = &[("06-shadows", "far-from-origin", 0.01)];
+
+/// The fraction of pixels `file` may differ by.
+fn allowed_fraction(file: &SceneFile) -> f64 {
+    PRECISION_SCENES
+        .iter()
+        .find(|(lecture, scene, _)| *lecture == file.lecture && *scene == file.name())
+        .map_or(MAX_FRACTION_OVER, |&(_, _, fraction)| fraction)
+}
 
 /// One lecture scene.
 pub struct SceneFile {
@@ -83,14 +96,15 @@ pub enum Verdict {
     Failed(String),
 }
 
-/// Renders `file` and compares it with its snapshot; on failure writes
-/// expected / yours / diff images under `target/grader/NN/scene/`.
+/// Renders `file` with the settings of its `[render]` table and compares it
+/// with its snapshot; on failure writes expected / yours / diff images under
+/// `target/grader/NN/scene/`.
 pub fn check_scene(file: &SceneFile) -> Verdict {
     let scene = match raylab::scene::load(&file.scene) {
         Ok(s) => s,
         Err(e) => return Verdict::Failed(e.to_string()),
     };
-    let yours = match render_scene(&scene, None, &TraceSettings::default()) {
+    let yours = match render_scene(&scene, None, &scene_settings(&scene)) {
         Ok((image, _)) => image,
         Err(e) => return Verdict::Failed(e),
     };
@@ -98,9 +112,10 @@ pub fn check_scene(file: &SceneFile) -> Verdict {
         Ok(i) => i,
         Err(e) => return Verdict::Failed(format!("no snapshot: {e} (run `grader bless`)")),
     };
+    let allowed = allowed_fraction(file);
     match compare(&expected, &yours, CHANNEL_THRESHOLD) {
         Err(e) => Verdict::Failed(e),
-        Ok(c) if c.fraction_over() <= MAX_FRACTION_OVER => Verdict::Passed { fraction: c.fraction_over() },
+        Ok(c) if c.fraction_over() <= allowed => Verdict::Passed { fraction: c.fraction_over() },
         Ok(c) => {
             let out = workspace_root().join("target/grader").join(&file.lecture).join(file.name());
             let written = write_difference(&out, &expected, &yours).map_or_else(
@@ -111,7 +126,7 @@ pub fn check_scene(file: &SceneFile) -> Verdict {
             Verdict::Failed(format!(
                 "{:.2}% of pixels differ (allowed {:.2}%), the first at ({x}, {y}){written}",
                 100.0 * c.fraction_over(),
-                100.0 * MAX_FRACTION_OVER
+                100.0 * allowed
             ))
         }
     }
@@ -157,7 +172,7 @@ pub fn check(only: Option<&str>) -> Result<ExitCode, String> {
 pub fn bless(only: Option<&str>) -> Result<ExitCode, String> {
     for file in scene_files(only)? {
         let scene = raylab::scene::load(&file.scene).map_err(|e| e.to_string())?;
-        let settings = TraceSettings::default();
+        let settings = scene_settings(&scene);
         std::fs::create_dir_all(&file.snapshots).map_err(|e| format!("{}: {e}", file.snapshots.display()))?;
         let error = |e: raylab::ImageError| e.to_string();
         render_scene(&scene, None, &settings)?.0.save_png(file.snapshot(".png")).map_err(error)?;

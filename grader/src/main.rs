@@ -14,7 +14,7 @@ use std::process::ExitCode;
 use clap::{Parser, Subcommand, ValueEnum};
 use l06_shadows::ShadowMode;
 use l08_ray_tree::TraceSettings;
-use raylab::Float;
+use raylab::{Float, Scene};
 
 #[derive(Parser)]
 #[command(name = "grader", about = "The raylab workbench: render scenes, compare with snapshots, bless.")]
@@ -58,16 +58,22 @@ struct RenderArgs {
     /// With --stats: print them as JSON.
     #[arg(long, requires = "stats")]
     json: bool,
-    /// The deepest level of the ray tree (6.837's -bounces).
-    #[arg(long, default_value_t = TraceSettings::default().max_depth)]
-    depth: u32,
-    /// The smallest contribution a ray may carry to be traced (6.837's -weight).
-    #[arg(long, default_value_t = TraceSettings::default().min_weight)]
-    weight: Float,
+    /// The deepest level of the ray tree (6.837's -bounces) [default: the scene's `depth`, else 5].
+    #[arg(long)]
+    depth: Option<u32>,
+    /// The smallest contribution a ray may carry to be traced (6.837's -weight) [default: the
+    /// scene's `weight`, else 0.01].
+    #[arg(long)]
+    weight: Option<Float>,
+    /// Shadow rays per area light and shaded point, 1 to 4096 [default: the scene's
+    /// `area_samples`, else 16].
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=4096))]
+    samples: Option<u32>,
     /// Trace no shadow rays.
     #[arg(long)]
     no_shadows: bool,
-    /// Transparent objects filter the light by their transparent colour instead of blocking it.
+    /// Transparent objects filter the light by their transparent colour instead of blocking it
+    /// [default: the scene's `transparent_shadows`, else off].
     #[arg(long)]
     transparent_shadows: bool,
     /// Split transparent surfaces between reflection and refraction by the exact Fresnel reflectance.
@@ -79,12 +85,15 @@ struct RenderArgs {
 }
 
 impl RenderArgs {
-    fn settings(&self) -> TraceSettings {
+    /// The scene's own settings ([`shade::scene_settings`]), overridden by the flags given.
+    fn settings(&self, scene: &Scene) -> TraceSettings {
+        let own = shade::scene_settings(scene);
         TraceSettings {
-            max_depth: self.depth,
-            min_weight: self.weight,
+            max_depth: self.depth.unwrap_or(own.max_depth),
+            min_weight: self.weight.unwrap_or(own.min_weight),
             shadows: !self.no_shadows,
-            shadow_mode: if self.transparent_shadows { ShadowMode::Transmissive } else { ShadowMode::Opaque },
+            shadow_mode: if self.transparent_shadows { ShadowMode::Transmissive } else { own.shadow_mode },
+            area_samples: self.samples.unwrap_or(own.area_samples),
             fresnel: self.fresnel,
         }
     }
@@ -139,7 +148,7 @@ fn render(args: &RenderArgs) -> Result<ExitCode, String> {
         scene.width = w;
         scene.height = h;
     }
-    let settings = args.settings();
+    let settings = args.settings(&scene);
     if let Some(pixel) = args.tree {
         let (color, tree) = shade::pixel_tree(&scene, pixel, &settings)?;
         println!(
@@ -161,4 +170,66 @@ fn render(args: &RenderArgs) -> Result<ExitCode, String> {
         }
     }
     Ok(ExitCode::SUCCESS)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::path::Path;
+
+    /// A scene whose `[render]` table sets every key.
+    const OWN: &str = "[render]\ndepth = 0\nweight = 0.5\ntransparent_shadows = true\narea_samples = 4\n\
+                       [camera]\ntype = \"perspective\"\neye = [0, 0, 5]\nat = [0, 0, 0]\nfovy = 40\n";
+
+    /// The settings `grader render` uses for the scene `text` with the command-line `flags`.
+    fn settings(text: &str, flags: &[&str]) -> TraceSettings {
+        let scene = raylab::scene::parse_toml(text, Path::new("s.toml")).unwrap_or_else(|e| panic!("{e}"));
+        let argv = ["grader", "render", "s.toml"].into_iter().chain(flags.iter().copied());
+        let Some(Command::Render(args)) = Cli::try_parse_from(argv).unwrap_or_else(|e| panic!("{e}")).command
+        else {
+            panic!("a render command");
+        };
+        args.settings(&scene)
+    }
+
+    #[test]
+    fn the_scene_sets_what_the_flags_leave_and_the_defaults_the_rest() {
+        let default = TraceSettings::default();
+        let transmissive = ShadowMode::Transmissive;
+        // The scene's own table, every key.
+        let own = TraceSettings {
+            max_depth: 0,
+            min_weight: 0.5,
+            shadow_mode: transmissive,
+            area_samples: 4,
+            ..default
+        };
+        assert_eq!(settings(OWN, &[]), own);
+        // Every flag given: the flags win.
+        let flags = ["--depth", "3", "--weight", "0.25", "--samples", "9", "--no-shadows", "--fresnel"];
+        let expected = TraceSettings {
+            max_depth: 3,
+            min_weight: 0.25,
+            shadows: false,
+            shadow_mode: transmissive,
+            area_samples: 9,
+            fresnel: true,
+        };
+        assert_eq!(settings(OWN, &flags), expected);
+        // One flag: only that one changes.
+        assert_eq!(settings(OWN, &["--samples", "64"]), TraceSettings { area_samples: 64, ..own });
+        // No table, no flags: the defaults (6.837 files are always so); the flag turns on
+        // transparent shadows, there being no flag to turn them off.
+        let plain = &OWN[OWN.find("[camera]").unwrap()..];
+        assert_eq!(settings(plain, &[]), default);
+        assert_eq!(settings(plain, &["--transparent-shadows"]).shadow_mode, transmissive);
+    }
+
+    #[test]
+    fn a_sample_count_outside_1_to_4096_is_refused() {
+        for n in ["0", "4097", "-1", "many"] {
+            assert!(Cli::try_parse_from(["grader", "render", "s.toml", "--samples", n]).is_err(), "{n}");
+        }
+        assert!(Cli::try_parse_from(["grader", "render", "s.toml", "--samples", "4096"]).is_ok());
+    }
 }

@@ -4,11 +4,29 @@
 
 use l01_transforms::Camera;
 use l04_quadrics_transforms::BruteForce;
+use l06_shadows::ShadowMode;
 use l08_ray_tree::{RayTree, TraceSettings, World, trace_recorded};
 use raylab::stats::{RayStats, measure};
 use raylab::{Color, Image, Scene};
 
 use crate::Aov;
+
+/// The tracer's settings for `scene`: what its `[render]` table says, and
+/// [`TraceSettings::default`] for what it does not (6.837 files say nothing).
+pub fn scene_settings(scene: &Scene) -> TraceSettings {
+    let (own, default) = (scene.render, TraceSettings::default());
+    TraceSettings {
+        max_depth: own.max_depth.unwrap_or(default.max_depth),
+        min_weight: own.min_weight.unwrap_or(default.min_weight),
+        shadow_mode: match own.transparent_shadows {
+            Some(true) => ShadowMode::Transmissive,
+            Some(false) => ShadowMode::Opaque,
+            None => default.shadow_mode,
+        },
+        area_samples: own.area_samples.unwrap_or(default.area_samples),
+        ..default
+    }
+}
 
 /// Renders `scene` at its size: the traced image, or the AOV asked for.
 pub fn render_scene(

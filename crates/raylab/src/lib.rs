@@ -4,9 +4,10 @@
 //! ([`Float`], [`Vec3`], [`Mat4`], switched to `f64` by the `f64` feature),
 //! [`Ray`], [`Interval`] and [`Hit`], linear colours and [`Image`]s (sRGB PNG
 //! in and out, float OpenEXR out), the scene description and its loaders
-//! ([`scene`]), the pixel loop ([`render`]), ray statistics ([`stats`]) and
-//! the [`Intersector`] trait through which later lectures plug into earlier
-//! ones. The kit knows no lecture.
+//! ([`scene`]), the pixel loop ([`render`]), ray statistics ([`stats`]), a
+//! deterministic random generator ([`random::Rng`]) and the [`Intersector`]
+//! trait through which later lectures plug into earlier ones. The kit knows
+//! no lecture.
 
 pub mod color;
 pub mod compare;
@@ -14,6 +15,7 @@ pub mod data;
 pub mod hit;
 pub mod image;
 pub mod math;
+pub mod random;
 pub mod ray;
 pub mod render;
 pub mod scene;

@@ -4,7 +4,7 @@
 //! In a scene file (`crates/raylab/SCENES.md`):
 //! ```toml
 //! [[lights]]
-//! type = "spot"              # or "directional", "point"
+//! type = "spot"              # or "directional", "point", "rect", "sphere"
 //! position = [0, 3, 0]
 //! direction = [0, -1, 0]     # the way the light travels
 //! inner = 10                 # degrees: full intensity inside
@@ -86,6 +86,9 @@ pub fn spot_falloff(cos_angle: Float, inner: Float, outer: Float) -> Float {
 ///   intensity = colour · [`distance_falloff`]`(attenuation, d)`.
 /// - Spot: as a point light, times [`spot_falloff`] of the angle between the
 ///   spot's axis and the ray from the light to the point (cos α = −L·axis).
+/// - Rect and sphere (area lights): as a point light at the light's centre
+///   (corner + ½(edge_u + edge_v) for a rect): the approximation used when no
+///   shadow rays are traced. [`crate::sample_light`] picks other points.
 ///
 /// A point exactly at the light's position has no direction to it: the
 /// sample then has direction +y (any unit vector would do), distance 0 and
@@ -104,6 +107,11 @@ pub fn illuminate(light: &Light, point: Vec3) -> LightSample {
         LightKind::Spot { position, direction, inner, outer, attenuation } => {
             (position, attenuation, Some((direction, inner, outer)))
         }
+        // An area light stands at its centre.
+        LightKind::Rect { corner, edge_u, edge_v, attenuation } => {
+            (corner + 0.5 * (edge_u + edge_v), attenuation, None)
+        }
+        LightKind::Sphere { center, attenuation, .. } => (center, attenuation, None),
     };
     // Direction and distance to a light at a position; none from the light itself.
     let to_light = position - point;

@@ -9,13 +9,18 @@
 //! found it) does not ([`offset_origin`]). Transparent
 //! blockers either block or filter the light by their transparent colour
 //! ([`ShadowMode`], [`transmittance`]), and [`shade_with_shadows`] traces
-//! only the shadow rays the scene requires. Book: chapter 6.
+//! only the shadow rays the scene requires. An area light is seen through n
+//! shadow rays to [`stratified`] points of it ([`shade_area_light`]): soft
+//! shadows, the same on every run ([`point_seed`]). Book: chapter 6.
 
 mod occlusion;
 mod offset;
 #[cfg(test)]
 mod scenes;
 mod shade;
+mod soft;
+#[cfg(test)]
+mod soft_scenes;
 #[cfg(test)]
 mod testing;
 
@@ -24,4 +29,5 @@ pub use offset::{
     NAIVE_EPSILON, OFFSET_FLOOR, OFFSET_SCALE, offset_origin, offset_origin_fixed_normal,
     offset_origin_fixed_t,
 };
-pub use shade::{Surface, shade_with_shadows};
+pub use shade::{ShadowSettings, Surface, shade_with_shadows, visibility};
+pub use soft::{ONE_MINUS_EPSILON, SEED_CELL, point_seed, shade_area_light, stratified};

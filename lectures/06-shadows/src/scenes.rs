@@ -14,7 +14,7 @@ use raylab::{Color, Float, Hit, Image, Intersector, Interval, Ray, Vec3};
 
 use crate::testing::Shapes;
 use crate::{
-    LIGHT_MARGIN, ShadowMode, Surface, occluded, offset_origin, offset_origin_fixed_normal,
+    LIGHT_MARGIN, ShadowSettings, Surface, occluded, offset_origin, offset_origin_fixed_normal,
     offset_origin_fixed_t, shade_with_shadows,
 };
 
@@ -31,7 +31,7 @@ const METHODS: [(&str, Offset); 3] = [
     ("fixed_normal", offset_origin_fixed_normal),
 ];
 
-fn load(name: &str) -> Scene {
+pub fn load(name: &str) -> Scene {
     let path = PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/scenes")).join(name);
     scene::load(&path).unwrap_or_else(|e| panic!("{e}"))
 }
@@ -89,7 +89,7 @@ fn exactly_occluded(scene: &Scene, query: &Query) -> bool {
 }
 
 /// The scene rendered with shadows, and the shadow rays it cast.
-fn render(scene: &Scene, mode: ShadowMode) -> (Image, u64) {
+pub fn render(scene: &Scene, settings: ShadowSettings) -> (Image, u64) {
     let camera = Camera::from_scene(&scene.camera, scene.width, scene.height).expect("a valid camera");
     let shapes = Shapes::new(&scene.objects);
     let ((image, _), stats) = measure(|| {
@@ -101,7 +101,7 @@ fn render(scene: &Scene, mode: ShadowMode) -> (Image, u64) {
             let material = &scene.materials[hit.material];
             let v = -ray.dir.normalize();
             let surface = Surface { material, diffuse: material.diffuse, hit, v, origin: ray.origin };
-            shade_with_shadows(&shapes, &scene.materials, &surface, &scene.lights, scene.ambient, mode)
+            shade_with_shadows(&shapes, &scene.materials, &surface, &scene.lights, scene.ambient, settings)
         })
     });
     (image, stats.get(Counter::ShadowRays))
@@ -195,7 +195,7 @@ fn renders_are_finite_and_cast_one_shadow_ray_per_light_that_needs_one() {
     // one per pixel hit and light with shadows that faces the point and reaches it.
     for name in SCENES {
         let scene = load(name);
-        let (image, rays) = render(&scene, ShadowMode::Opaque);
+        let (image, rays) = render(&scene, ShadowSettings::default());
         assert_eq!(image.non_finite(), None, "{name}");
         assert_eq!(rays, shadow_queries(&scene).len() as u64, "{name}");
     }
@@ -209,11 +209,11 @@ fn the_fill_light_without_shadows_costs_no_shadow_ray() {
     assert!(scene.lights[0].shadows && !scene.lights[1].shadows);
     let key_only = shadow_queries(&scene);
     assert!(key_only.iter().all(|query| query.light == 0));
-    let (_, rays) = render(&scene, ShadowMode::Opaque);
+    let (_, rays) = render(&scene, ShadowSettings::default());
     assert_eq!(rays, key_only.len() as u64);
     scene.lights[1].shadows = true;
     let fill_faced = shadow_queries(&scene).iter().filter(|query| query.light == 1).count();
-    let (_, rays_both) = render(&scene, ShadowMode::Opaque);
+    let (_, rays_both) = render(&scene, ShadowSettings::default());
     assert!(fill_faced > 10_000, "the fill light faces most pixels: {fill_faced}");
     assert_eq!(rays_both, (key_only.len() + fill_faced) as u64);
 }
@@ -283,8 +283,8 @@ fn the_far_scene_looks_like_the_same_scene_at_the_origin() {
     // allow 2%. Acne would darken half the ball's lit pixels: several percent of the image.
     let far = load("far-from-origin.toml");
     let near = translated(&far, Vec3::splat(1e4));
-    let (far_image, _) = render(&far, ShadowMode::Opaque);
-    let (near_image, _) = render(&near, ShadowMode::Opaque);
+    let (far_image, _) = render(&far, ShadowSettings::default());
+    let (near_image, _) = render(&near, ShadowSettings::default());
     let differ = far_image
         .pixels
         .iter()

@@ -1,12 +1,31 @@
 //! Local shading with shadows: lecture 05's model, each light weighted by
 //! how much of it the shadow rays let through.
 
-use l05_shading::{illuminate, shade_light};
-use raylab::scene::{Light, Material};
+use l05_shading::{LightSample, illuminate, shade_light};
+use raylab::scene::{Light, LightKind, Material};
 use raylab::{BLACK, Color, Hit, Intersector, Vec3, WHITE};
 
 use crate::occlusion::{ShadowMode, occluded, transmittance};
 use crate::offset::offset_origin;
+use crate::soft::shade_area_light;
+
+/// What the shading with shadows spends on its shadow rays: what transparent
+/// blockers do, and how many samples an area light gets.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ShadowSettings {
+    /// Transparent blockers block ([`ShadowMode::Opaque`]) or filter by their k_t.
+    pub mode: ShadowMode,
+    /// Shadow rays per area light and shaded point (≥ 1; a scene file's
+    /// `area_samples`): more rays, less noise in the penumbra.
+    pub area_samples: u32,
+}
+
+impl Default for ShadowSettings {
+    /// Opaque blockers, 16 samples (a 4 × 4 grid) per area light.
+    fn default() -> Self {
+        Self { mode: ShadowMode::Opaque, area_samples: 16 }
+    }
+}
 
 /// The surface point being shaded: the hit, its material, the surface colour
 /// there, the direction to the eye and the origin of the ray that found it.
@@ -27,37 +46,68 @@ pub struct Surface<'a> {
     pub origin: Vec3,
 }
 
+/// How much of the light of `sample` reaches `surface` past the blockers:
+/// white or black by [`occluded`] in [`ShadowMode::Opaque`], the filter colour
+/// [`transmittance`] in [`ShadowMode::Transmissive`], for the shadow ray from
+/// [`offset_origin`]`(p, N, L, surface.origin)` (p, N the hit's point and
+/// normal, L = `sample.direction`). Book: §6.3 Shading with shadows.
+pub fn visibility(
+    scene: &dyn Intersector,
+    materials: &[Material],
+    surface: &Surface,
+    sample: &LightSample,
+    mode: ShadowMode,
+) -> Color {
+    // SOLUTION BEGIN
+    // The shadow ray starts just off the surface, on the light's side.
+    let from = offset_origin(surface.hit.point, surface.hit.normal, sample.direction, surface.origin);
+    match mode {
+        ShadowMode::Opaque if occluded(scene, from, sample) => BLACK,
+        ShadowMode::Opaque => WHITE,
+        ShadowMode::Transmissive => transmittance(scene, materials, from, sample),
+    }
+    // SOLUTION END
+}
+
 /// Lecture 05's local shading with shadows:
 ///
 ///   I = k_a ⊙ I_a + Σ_lights V_L ⊙ shade_light(…, illuminate(light, p)),
 ///
-/// where the visibility V_L is 1 (white) or 0 by [`occluded`] in
-/// [`ShadowMode::Opaque`], and the filter colour [`transmittance`] in
-/// [`ShadowMode::Transmissive`]; k_a = `surface.diffuse`. The shadow ray
-/// starts at [`offset_origin`]`(p, N, L, surface.origin)`. The ambient term is never
-/// shadowed.
+/// where the visibility V_L is [`visibility`] (1 or 0 in
+/// [`ShadowMode::Opaque`], the filter colour in [`ShadowMode::Transmissive`],
+/// as `settings.mode` says); k_a = `surface.diffuse`. An area light (rect or
+/// sphere) that casts shadows adds [`shade_area_light`] instead: the average
+/// over `settings.area_samples` of its points, each with its own shadow ray
+/// (soft shadows). The ambient term is never shadowed.
 ///
 /// Only what the scene requires is traced: no shadow ray for a light with
-/// `shadows == false` (it lights everything it faces), none for a light
-/// behind the surface (N·L ≤ 0: it adds nothing anyway) and none for a light
-/// that sends nothing here (a spot light outside its cone, a black material).
-/// `materials` are the scene's, indexed by `hit.material` of the blockers.
-/// With nothing in the way, the result is exactly lecture 05's `shade_local`.
-/// Book: §6.3 Shading with shadows.
+/// `shadows == false` (it lights everything it faces; an area light then
+/// stands at its centre, as in lecture 05's `illuminate`), none for a light
+/// (or a light's sample) behind the surface (N·L ≤ 0: it adds nothing anyway)
+/// and none for a light that sends nothing here (a spot light outside its
+/// cone, a black material). `materials` are the scene's, indexed by
+/// `hit.material` of the blockers. With nothing in the way and no area light
+/// casting shadows, the result is exactly lecture 05's `shade_local`.
+/// Book: §6.3 Shading with shadows, §6.5 Area lights and soft shadows.
 pub fn shade_with_shadows(
     scene: &dyn Intersector,
     materials: &[Material],
     surface: &Surface,
     lights: &[Light],
     ambient: Color,
-    mode: ShadowMode,
+    settings: ShadowSettings,
 ) -> Color {
     debug_assert!(surface.hit.normal.is_normalized(), "shade_with_shadows: the normal is not unit");
     // SOLUTION BEGIN
-    let Surface { material, diffuse, hit, v, origin } = *surface;
+    let Surface { material, diffuse, hit, v, .. } = *surface;
     // The ambient term, never shadowed.
     let mut color = diffuse * ambient;
     for light in lights {
+        // An area light with shadows: the average of its samples, soft shadows.
+        if light.shadows && matches!(light.kind, LightKind::Rect { .. } | LightKind::Sphere { .. }) {
+            color += shade_area_light(scene, materials, surface, light, settings);
+            continue;
+        }
         // A light behind the surface adds nothing: no shadow ray.
         let sample = illuminate(light, hit.point);
         if hit.normal.dot(sample.direction) <= 0.0 {
@@ -69,17 +119,9 @@ pub fn shade_with_shadows(
             continue;
         }
         // The visibility of the light, by a shadow ray from just off the surface.
-        let visibility = if light.shadows {
-            let from = offset_origin(hit.point, hit.normal, sample.direction, origin);
-            match mode {
-                ShadowMode::Opaque if occluded(scene, from, &sample) => BLACK,
-                ShadowMode::Opaque => WHITE,
-                ShadowMode::Transmissive => transmittance(scene, materials, from, &sample),
-            }
-        } else {
-            WHITE
-        };
-        color += visibility * direct;
+        let visible =
+            if light.shadows { visibility(scene, materials, surface, &sample, settings.mode) } else { WHITE };
+        color += visible * direct;
     }
     color
     // SOLUTION END
@@ -99,6 +141,11 @@ mod tests {
 
     fn v(x: Float, y: Float, z: Float) -> Vec3 {
         Vec3::new(x, y, z)
+    }
+
+    /// The default settings with blockers treated by `mode`.
+    fn settings(mode: ShadowMode) -> ShadowSettings {
+        ShadowSettings { mode, ..ShadowSettings::default() }
     }
 
     /// Materials: 0 the grey floor (k_d = ½, opaque), 1 an opaque ball, 2 a ball of k_t = ½.
@@ -138,7 +185,7 @@ mod tests {
         let surface = Surface { material: &materials[0], diffuse: materials[0].diffuse, hit, v, origin };
         let scene = Shapes::new(objects);
         let (color, stats) =
-            measure(|| shade_with_shadows(&scene, &materials, &surface, lights, AMBIENT, mode));
+            measure(|| shade_with_shadows(&scene, &materials, &surface, lights, AMBIENT, settings(mode)));
         (color, stats.get(Counter::ShadowRays))
     }
 
@@ -290,7 +337,7 @@ mod tests {
                 origin: eye,
             };
             let color =
-                shade_with_shadows(&scene, &materials, &surface, &lights, AMBIENT, ShadowMode::Opaque);
+                shade_with_shadows(&scene, &materials, &surface, &lights, AMBIENT, ShadowSettings::default());
             approx::assert_abs_diff_eq!(color, Color::splat(0.55), epsilon = 2.0 * EPS);
         }
     }
@@ -335,7 +382,7 @@ mod tests {
             let (hit, eye, origin) = floor_hit(rng.range(-3.0, 3.0), rng.range(-3.0, 3.0));
             let surface = Surface { material: &shiny, diffuse: shiny.diffuse, hit, v: eye, origin };
             for mode in [ShadowMode::Opaque, ShadowMode::Transmissive] {
-                let with = shade_with_shadows(&scene, &[], &surface, &lights, AMBIENT, mode);
+                let with = shade_with_shadows(&scene, &[], &surface, &lights, AMBIENT, settings(mode));
                 assert_eq!(with, shade_local(&shiny, shiny.diffuse, &hit, eye, &lights, AMBIENT), "{hit:?}");
             }
         }

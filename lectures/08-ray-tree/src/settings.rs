@@ -13,7 +13,8 @@ use raylab::Float;
 /// could change the pixel by less than that. 6.837's ray tracer calls them
 /// `-bounces` and `-weight`. `shadows = false` shades with lecture 05's
 /// `shade_local` (no shadow ray at all); `shadow_mode` picks what
-/// transparent blockers do (lecture 06); `fresnel` lets the exact Fresnel
+/// transparent blockers do and `area_samples` how many shadow rays an area
+/// light gets per shaded point (lecture 06); `fresnel` lets the exact Fresnel
 /// reflectance split a transparent surface's k_t between the mirror and the
 /// transmitted ray. Book: §8.3 Stopping the recursion.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -26,18 +27,22 @@ pub struct TraceSettings {
     pub shadows: bool,
     /// Transparent blockers block, or filter by their k_t.
     pub shadow_mode: ShadowMode,
+    /// Shadow rays per area light and shaded point (≥ 1), for soft shadows.
+    pub area_samples: u32,
     /// Split k_t by the Fresnel reflectance R: k_r + R·k_t to the mirror ray, (1 − R)·k_t through.
     pub fresnel: bool,
 }
 
 impl Default for TraceSettings {
-    /// Depth 5, weight 0.01 (6.837's `-bounces 5 -weight 0.01`), opaque shadows, no Fresnel.
+    /// Depth 5, weight 0.01 (6.837's `-bounces 5 -weight 0.01`), opaque shadows, 16 samples per
+    /// area light (lecture 06's default), no Fresnel.
     fn default() -> Self {
         Self {
             max_depth: 5,
             min_weight: 0.01,
             shadows: true,
             shadow_mode: ShadowMode::Opaque,
+            area_samples: 16,
             fresnel: false,
         }
     }
@@ -51,6 +56,7 @@ mod tests {
     fn defaults_are_the_6837_flags() {
         let s = TraceSettings::default();
         assert_eq!((s.max_depth, s.min_weight, s.shadows, s.fresnel), (5, 0.01, true, false));
-        assert_eq!(s.shadow_mode, ShadowMode::Opaque);
+        assert_eq!((s.shadow_mode, s.area_samples), (ShadowMode::Opaque, 16));
+        assert_eq!(s.area_samples, l06_shadows::ShadowSettings::default().area_samples);
     }
 }

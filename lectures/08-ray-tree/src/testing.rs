@@ -32,6 +32,7 @@ pub fn scene(
         lights,
         materials,
         objects,
+        render: Default::default(),
     }
 }
 

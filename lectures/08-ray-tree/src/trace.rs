@@ -12,7 +12,7 @@
 //! ```
 
 use l05_shading::shade_local;
-use l06_shadows::{Surface, offset_origin, shade_with_shadows};
+use l06_shadows::{ShadowSettings, Surface, offset_origin, shade_with_shadows};
 use l07_reflection_refraction::{fresnel_dielectric, interface, mirror_direction, refract};
 use raylab::stats::{Counter, count};
 use raylab::{BLACK, Color, Float, Interval, Ray, Vec3};
@@ -122,7 +122,7 @@ fn trace_ray(
             &surface,
             &scene.lights,
             scene.ambient,
-            settings.shadow_mode,
+            ShadowSettings { mode: settings.shadow_mode, area_samples: settings.area_samples },
         )
     } else {
         shade_local(material, material.diffuse, &hit, -dir, &scene.lights, scene.ambient)
@@ -267,8 +267,9 @@ mod tests {
                 let eye = -ray.dir.normalize();
                 let surface =
                     Surface { material, diffuse: material.diffuse, hit, v: eye, origin: ray.origin };
-                let mode = ShadowMode::Opaque;
-                let with = shade_with_shadows(&objects, &s.materials, &surface, &s.lights, s.ambient, mode);
+                let shadows = ShadowSettings::default();
+                let with =
+                    shade_with_shadows(&objects, &s.materials, &surface, &s.lights, s.ambient, shadows);
                 let without = shade_local(material, material.diffuse, &hit, eye, &s.lights, s.ambient);
                 let settings = TraceSettings::default();
                 let (color, stats) = trace_counted(&s, &ray, &settings);
@@ -354,6 +355,39 @@ mod tests {
             }
         }
         println!("glass of η = 1: largest difference {:.1}ε", largest / EPS);
+    }
+
+    #[test]
+    fn the_area_samples_reach_the_shading() {
+        // A matte sphere (k_d = ½) at (0, 0, −5) and a white 2 × 2 rect light in the plane
+        // z = 5, x, y ∈ [−1, 1]. The eye ray down −z hits (0, 0, −4), N = +z; every point of
+        // the light is in front of it (N·L ≥ 9/√83 = 0.988) with nothing in the way: exactly
+        // `area_samples` shadow rays and no other ray, and the colour is at least
+        // ½·0.1 + ½·0.988 = 0.544 in red (no attenuation).
+        let attenuation = Attenuation::default();
+        let panel = Light {
+            color: WHITE,
+            shadows: true,
+            kind: LightKind::Rect {
+                corner: v(-1.0, -1.0, 5.0),
+                edge_u: 2.0 * Vec3::X,
+                edge_v: 2.0 * Vec3::Y,
+                attenuation,
+            },
+        };
+        let s = scene(
+            vec![sphere(v(0.0, 0.0, -5.0), 1.0, 0)],
+            vec![matte(v(0.5, 0.5, 0.5))],
+            vec![panel],
+            BACKGROUND,
+            AMBIENT,
+        );
+        for n in [1, 9, 10] {
+            let settings = TraceSettings { area_samples: n, ..TraceSettings::default() };
+            let (color, stats) = trace_counted(&s, &Ray::new(Vec3::ZERO, -Vec3::Z), &settings);
+            assert_eq!(secondary(&stats), (0, 0, u64::from(n)), "{n} samples");
+            assert!(color.is_finite() && color.x >= 0.544, "{color}");
+        }
     }
 
     /// A glass block (y from −1 to 0, η = 1.5, k_t = 1, no mirror of its own) holding a

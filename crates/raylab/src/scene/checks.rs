@@ -135,6 +135,28 @@ pub fn attenuation(c: Float, l: Float, q: Float) -> Result<Attenuation, String> 
     Ok(Attenuation { constant: c, linear: l, quadratic: q })
 }
 
+/// A rectangular area light's edges must span a parallelogram: both non-zero
+/// and not parallel, tested as |u × v| > 10⁻⁶·|u|·|v| (the sine of the angle
+/// between them above 10⁻⁶, as for the camera's `up`).
+pub fn check_rect(edge_u: Vec3, edge_v: Vec3) -> Result<(), String> {
+    if edge_u == Vec3::ZERO || edge_v == Vec3::ZERO {
+        return Err(format!(
+            "a rect light's edges must be non-zero, found edge_u {} and edge_v {}",
+            show(edge_u),
+            show(edge_v)
+        ));
+    }
+    let area = edge_u.cross(edge_v).length();
+    if area.is_nan() || area <= 1e-6 * edge_u.length() * edge_v.length() {
+        return Err(format!(
+            "a rect light's edges must not be parallel, found edge_u {} and edge_v {}",
+            show(edge_u),
+            show(edge_v)
+        ));
+    }
+    Ok(())
+}
+
 /// The matrix with the 16 numbers in row-major order; it must be affine (last
 /// row 0 0 0 1) and invertible.
 pub fn affine_from_rows(rows: &[Float; 16]) -> Result<Mat4, String> {
@@ -201,6 +223,15 @@ mod tests {
         assert!(check_polygon(&bent).unwrap_err().contains("not planar"));
         let bow_tie = [a, Vec3::new(1.0, 1.0, 0.0), b, Vec3::Y];
         assert!(check_polygon(&bow_tie).unwrap_err().contains("area is zero"));
+    }
+
+    #[test]
+    fn parallel_or_zero_rect_edges_are_rejected() {
+        assert!(check_rect(Vec3::X, Vec3::Z).is_ok());
+        assert!(check_rect(Vec3::X, Vec3::new(-2.0, 0.0, 0.0)).unwrap_err().contains("parallel"));
+        assert!(check_rect(Vec3::ZERO, Vec3::Z).unwrap_err().contains("non-zero"));
+        // sin θ = 10⁻³ ≫ 10⁻⁶: a thin sliver of a light, but a light.
+        assert!(check_rect(Vec3::X, Vec3::new(1.0, 1e-3, 0.0)).is_ok());
     }
 
     #[test]

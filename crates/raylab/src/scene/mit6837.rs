@@ -21,7 +21,9 @@ use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 use super::checks::{self, show};
-use super::{Camera, Light, LightKind, Material, Mesh, Object, Scene, SceneError, Shape, Transform};
+use super::{
+    Camera, Light, LightKind, Material, Mesh, Object, RenderSettings, Scene, SceneError, Shape, Transform,
+};
 use crate::color::{BLACK, Color, WHITE};
 use crate::math::{Float, Mat4, Vec3, radians};
 
@@ -321,6 +323,7 @@ impl<'a> Parser<'a> {
             lights,
             materials: self.materials,
             objects: self.objects,
+            render: RenderSettings::default(),
         })
     }
 

@@ -63,7 +63,9 @@ fn assert_usable(scene: &Scene, name: &str) {
         match light.kind {
             LightKind::Directional { direction } => assert!(unit(direction), "{name}: light direction"),
             LightKind::Point { position, .. } => assert!(position.is_finite(), "{name}: light position"),
-            LightKind::Spot { .. } => panic!("{name}: 6.837 has no spot lights"),
+            LightKind::Spot { .. } | LightKind::Rect { .. } | LightKind::Sphere { .. } => {
+                panic!("{name}: 6.837 has no spot or area lights")
+            }
         }
     }
     for m in &scene.materials {
@@ -137,7 +139,9 @@ fn scene1_01_is_one_red_sphere_seen_orthographically() {
         height: 5.0,
     };
     assert_eq!(scene.camera, expected);
-    assert_eq!((scene.background, scene.ambient), (BLACK, BLACK), "no ambientLight given");
+    // No `Lights` block and no ambientLight: the loader makes the ambient light white, so
+    // the unlit object shows its diffuse colour (assignment 1 has no shading).
+    assert_eq!((scene.background, scene.ambient), (BLACK, WHITE), "no Lights, no ambientLight");
     assert!(scene.lights.is_empty());
     assert_eq!(scene.materials.len(), 1);
     assert_eq!(

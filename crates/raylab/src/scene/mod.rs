@@ -49,6 +49,25 @@ pub struct Scene {
     pub lights: Vec<Light>,
     pub materials: Vec<Material>,
     pub objects: Vec<Object>,
+    /// How the scene asks to be rendered (its `[render]` table); the renderer
+    /// fills what is `None` with its defaults and its command line overrides it.
+    pub render: RenderSettings,
+}
+
+/// A scene's own render settings, the TOML `[render]` table; every field is
+/// optional (`None`: the renderer's default). The loaders guarantee the
+/// ranges stated. MIT 6.837 files have none: all `None`.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct RenderSettings {
+    /// `depth`: the deepest level of the ray tree (the eye ray is level 0), 0..=64.
+    pub max_depth: Option<u32>,
+    /// `weight`: the smallest weight a ray of the tree may carry, in [0, 1].
+    pub min_weight: Option<Float>,
+    /// `transparent_shadows`: transparent blockers filter the light by their
+    /// transparent colour (true) or block it (false).
+    pub transparent_shadows: Option<bool>,
+    /// `area_samples`: shadow rays per area light and shading point, 1..=4096.
+    pub area_samples: Option<u32>,
 }
 
 /// The camera as the scene file describes it. Lecture 01 turns it into a ray
@@ -82,10 +101,21 @@ pub enum LightKind {
     /// A point light restricted to a cone around the unit `direction`:
     /// full inside `inner` (half-angle, radians), falling to zero at `outer`.
     Spot { position: Vec3, direction: Vec3, inner: Float, outer: Float, attenuation: Attenuation },
+    /// An area light, the parallelogram corner + a·edge_u + b·edge_v for a, b ∈
+    /// [0, 1] (`edge_u`, `edge_v` non-zero and not parallel). Each of its
+    /// points emits like a point light of the whole light's colour, dimmed by
+    /// `attenuation` with its own distance, to both sides and without a cosine
+    /// at the emitter; the shading averages over the points (so from afar it
+    /// looks like a point light at its centre, whatever its size).
+    Rect { corner: Vec3, edge_u: Vec3, edge_v: Vec3, attenuation: Attenuation },
+    /// A spherical area light of `radius` > 0 around `center`, whose points emit
+    /// like a rectangle's. Seen from a point it is sampled on its silhouette:
+    /// the disc through `center` perpendicular to the direction to the point.
+    Sphere { center: Vec3, radius: Float, attenuation: Attenuation },
 }
 
-/// Distance attenuation 1 / (constant + linear·d + quadratic·d²) of point and
-/// spot lights; the default (1, 0, 0) is no attenuation.
+/// Distance attenuation 1 / (constant + linear·d + quadratic·d²) of point,
+/// spot and area lights; the default (1, 0, 0) is no attenuation.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Attenuation {
     pub constant: Float,

@@ -15,11 +15,12 @@ use toml::Spanned;
 
 use super::checks::{self, show};
 use super::toml_spec::{
-    CameraSpec, LightSpec, MaterialSpec, Num, Nums, ObjectSpec, SHAPES, ScaleSpec, SceneSpec, StepSpec,
-    shape_keys,
+    CameraSpec, LightSpec, MaterialSpec, Num, Nums, ObjectSpec, RenderSpec, SHAPES, ScaleSpec, SceneSpec,
+    StepSpec, shape_keys,
 };
 use super::{
-    Camera, Light, LightKind, Material, Mesh, Object, Scene, SceneError, Shape, Specular, Transform,
+    Camera, Light, LightKind, Material, Mesh, Object, RenderSettings, Scene, SceneError, Shape, Specular,
+    Transform,
 };
 use crate::color::{BLACK, Color, WHITE};
 use crate::math::{Float, Mat4, Vec3, radians};
@@ -157,7 +158,8 @@ impl Reader<'_> {
                 self.color(&image.ambient, "ambient", BLACK)?,
             ),
         };
-        Ok(Scene { camera, width, height, background, ambient, lights, materials, objects })
+        let render = self.render(&spec.render)?;
+        Ok(Scene { camera, width, height, background, ambient, lights, materials, objects, render })
     }
 
     fn size(&self, v: &Option<Spanned<i64>>, key: &str, default: u32) -> Result<u32, SceneError> {
@@ -217,16 +219,25 @@ impl Reader<'_> {
             ("attenuation", span_of(&l.attenuation)),
             ("inner", span_of(&l.inner)),
             ("outer", span_of(&l.outer)),
+            ("corner", span_of(&l.corner)),
+            ("edge_u", span_of(&l.edge_u)),
+            ("edge_v", span_of(&l.edge_v)),
+            ("center", span_of(&l.center)),
+            ("radius", span_of(&l.radius)),
         ];
         let kind = l.kind.get_ref().as_str();
         let (what, allowed): (&str, &[&str]) = match kind {
             "directional" => ("a directional light", &["direction"]),
             "point" => ("a point light", &["position", "attenuation"]),
             "spot" => ("a spot light", &["position", "direction", "attenuation", "inner", "outer"]),
+            "rect" => ("a rect light", &["corner", "edge_u", "edge_v", "attenuation"]),
+            "sphere" => ("a sphere light", &["center", "radius", "attenuation"]),
             other => {
                 return Err(self.error(
                     &l.kind.span(),
-                    format!("unknown light type `{other}`, expected directional, point or spot"),
+                    format!(
+                        "unknown light type `{other}`, expected directional, point, spot, rect or sphere"
+                    ),
                 ));
             }
         };
@@ -247,7 +258,7 @@ impl Reader<'_> {
                 position: self.vec3(self.need(&l.position, "position", what, &whole)?, "position")?,
                 attenuation,
             },
-            _ => {
+            "spot" => {
                 let inner_spec = self.need(&l.inner, "inner", what, &whole)?;
                 let outer_spec = self.need(&l.outer, "outer", what, &whole)?;
                 let (inner, outer) = (self.float(inner_spec, "inner")?, self.float(outer_spec, "outer")?);
@@ -271,8 +282,55 @@ impl Reader<'_> {
                     attenuation,
                 }
             }
+            "rect" => {
+                let corner = self.vec3(self.need(&l.corner, "corner", what, &whole)?, "corner")?;
+                let u_spec = self.need(&l.edge_u, "edge_u", what, &whole)?;
+                let v_spec = self.need(&l.edge_v, "edge_v", what, &whole)?;
+                let (edge_u, edge_v) = (self.vec3(u_spec, "edge_u")?, self.vec3(v_spec, "edge_v")?);
+                let span = if edge_u == Vec3::ZERO { u_spec.span() } else { v_spec.span() };
+                self.at(&span, checks::check_rect(edge_u, edge_v))?;
+                LightKind::Rect { corner, edge_u, edge_v, attenuation }
+            }
+            _ => {
+                let center = self.vec3(self.need(&l.center, "center", what, &whole)?, "center")?;
+                let r = self.need(&l.radius, "radius", what, &whole)?;
+                let radius = self.float(r, "radius")?;
+                if radius <= 0.0 {
+                    return Err(self.error(&r.span(), format!("radius must be > 0, found {radius}")));
+                }
+                LightKind::Sphere { center, radius, attenuation }
+            }
         };
         Ok(Light { color: self.color(&l.color, "color", WHITE)?, shadows: l.shadows.unwrap_or(true), kind })
+    }
+
+    /// The `[render]` table; every key optional.
+    fn render(&self, spec: &Option<RenderSpec>) -> Result<RenderSettings, SceneError> {
+        let Some(r) = spec else { return Ok(RenderSettings::default()) };
+        let max_depth = match &r.depth {
+            None => None,
+            Some(d) => match *d.get_ref() {
+                n @ 0..=64 => Some(n as u32),
+                n => return Err(self.error(&d.span(), format!("depth must be in 0..=64, found {n}"))),
+            },
+        };
+        let min_weight = match &r.weight {
+            None => None,
+            Some(w) => match self.float(w, "weight")? {
+                x if (0.0..=1.0).contains(&x) => Some(x),
+                x => return Err(self.error(&w.span(), format!("weight must be in [0, 1], found {x}"))),
+            },
+        };
+        let area_samples = match &r.area_samples {
+            None => None,
+            Some(a) => match *a.get_ref() {
+                n @ 1..=4096 => Some(n as u32),
+                n => {
+                    return Err(self.error(&a.span(), format!("area_samples must be in 1..=4096, found {n}")));
+                }
+            },
+        };
+        Ok(RenderSettings { max_depth, min_weight, transparent_shadows: r.transparent_shadows, area_samples })
     }
 
     /// The named materials, in the order of the file.

@@ -25,6 +25,17 @@ pub struct SceneSpec {
     pub materials: BTreeMap<String, Spanned<MaterialSpec>>,
     #[serde(default)]
     pub objects: Vec<Spanned<ObjectSpec>>,
+    pub render: Option<RenderSpec>,
+}
+
+/// `[render]`
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RenderSpec {
+    pub depth: Option<Spanned<i64>>,
+    pub weight: Option<Num>,
+    pub transparent_shadows: Option<bool>,
+    pub area_samples: Option<Spanned<i64>>,
 }
 
 /// `[image]`
@@ -63,6 +74,11 @@ pub struct LightSpec {
     pub attenuation: Option<Nums>,
     pub inner: Option<Num>,
     pub outer: Option<Num>,
+    pub corner: Option<Nums>,
+    pub edge_u: Option<Nums>,
+    pub edge_v: Option<Nums>,
+    pub center: Option<Nums>,
+    pub radius: Option<Num>,
 }
 
 /// One `[materials.NAME]` table.

@@ -40,6 +40,12 @@ height = 48
 background = [0.5, 0.25, 0]
 ambient = [0.125, 0.125, 0.125]
 
+[render]
+depth = 7
+weight = 0.25
+transparent_shadows = true
+area_samples = 64
+
 [camera]
 type = "perspective"
 eye = [0, 1, 5]
@@ -65,6 +71,20 @@ direction = [0, 0, -3]
 inner = 30
 outer = 60
 attenuation = [0, 0, 1]
+
+[[lights]]
+type = "rect"
+corner = [-1, 4, -1]
+edge_u = [2, 0, 0]
+edge_v = [0, 0, 2]
+color = [2, 2, 2]
+
+[[lights]]
+type = "sphere"
+center = [3, 4, 0]
+radius = 0.5
+attenuation = [1, 0, 0.5]
+shadows = false
 
 [materials.red]
 diffuse = [1, 0, 0]
@@ -151,8 +171,16 @@ fn full_example_loads_to_the_values_written() {
     assert_eq!((eye, at, up), (Vec3::new(0.0, 1.0, 5.0), Vec3::Y, Vec3::Y));
     approx::assert_abs_diff_eq!(fovy, FRAC_PI_2, epsilon = ROUNDING); // 90°
 
+    let render = RenderSettings {
+        max_depth: Some(7),
+        min_weight: Some(0.25),
+        transparent_shadows: Some(true),
+        area_samples: Some(64),
+    };
+    assert_eq!(scene.render, render);
+
     // Lights: directions normalised, defaults white and casting shadows.
-    assert_eq!(scene.lights.len(), 3);
+    assert_eq!(scene.lights.len(), 5);
     let sun = scene.lights[0];
     assert_eq!(sun.kind, LightKind::Directional { direction: Vec3::NEG_Y });
     assert_eq!((sun.color, sun.shadows), (Color::new(1.0, 0.5, 0.25), false));
@@ -167,6 +195,17 @@ fn full_example_loads_to_the_values_written() {
     approx::assert_abs_diff_eq!(inner, FRAC_PI_6, epsilon = ROUNDING); // 30°
     approx::assert_abs_diff_eq!(outer, FRAC_PI_3, epsilon = ROUNDING); // 60°
     assert_eq!(attenuation, Attenuation { constant: 0.0, linear: 0.0, quadratic: 1.0 });
+    // Area lights: kept as written (edges are not normalised), attenuation default or given.
+    let panel = scene.lights[3];
+    let (corner, edge_u, edge_v) =
+        (Vec3::new(-1.0, 4.0, -1.0), Vec3::new(2.0, 0.0, 0.0), Vec3::new(0.0, 0.0, 2.0));
+    let attenuation = Attenuation::default();
+    assert_eq!(panel.kind, LightKind::Rect { corner, edge_u, edge_v, attenuation });
+    assert_eq!((panel.color, panel.shadows), (Color::splat(2.0), true));
+    let bulb = scene.lights[4];
+    let attenuation = Attenuation { constant: 1.0, linear: 0.0, quadratic: 0.5 };
+    assert_eq!(bulb.kind, LightKind::Sphere { center: Vec3::new(3.0, 4.0, 0.0), radius: 0.5, attenuation });
+    assert_eq!((bulb.color, bulb.shadows), (WHITE, false));
 
     // Materials in the order of the file (not alphabetical), then the implicit default once.
     let names: Vec<&str> = scene.materials.iter().map(|m| m.name.as_str()).collect();
@@ -237,6 +276,10 @@ fn orthographic_camera_and_defaults() {
     );
     assert_eq!((scene.width, scene.height, scene.background, scene.ambient), (320, 240, BLACK, BLACK));
     assert!(scene.lights.is_empty() && scene.materials.is_empty() && scene.objects.is_empty());
+    // No [render] table: every setting left to the renderer.
+    assert_eq!(scene.render, RenderSettings::default());
+    let empty_table = parse(&format!("{text}[render]\n")).unwrap();
+    assert_eq!(empty_table.render, RenderSettings::default());
 }
 
 #[test]
@@ -377,6 +420,44 @@ fn light_material_image_and_syntax_errors() {
 }
 
 #[test]
+fn render_table_and_area_light_errors() {
+    // Every [render] key out of its range, an unknown key, a wrong type; then the area
+    // lights' keys. The camera takes lines 1–5, so the table's first key is on line 7.
+    let render = |body: &str| error(&format!("{CAMERA}[render]\n{body}"));
+    insta::assert_snapshot!(render("depth = -1\n"),
+        @"scenes/a.toml:7:9: depth must be in 0..=64, found -1");
+    insta::assert_snapshot!(render("depth = 65\n"),
+        @"scenes/a.toml:7:9: depth must be in 0..=64, found 65");
+    insta::assert_snapshot!(render("weight = 1.5\n"),
+        @"scenes/a.toml:7:10: weight must be in [0, 1], found 1.5");
+    insta::assert_snapshot!(render("weight = nan\n"),
+        @"scenes/a.toml:7:10: weight must be a finite number, found NaN");
+    insta::assert_snapshot!(render("area_samples = 0\n"),
+        @"scenes/a.toml:7:16: area_samples must be in 1..=4096, found 0");
+    insta::assert_snapshot!(render("area_samples = 4097\n"),
+        @"scenes/a.toml:7:16: area_samples must be in 1..=4096, found 4097");
+    insta::assert_snapshot!(render("transparent_shadows = 1\n"),
+        @"scenes/a.toml:7:23: invalid type: integer `1`, expected a boolean");
+    insta::assert_snapshot!(render("samples = 4\n"),
+        @"scenes/a.toml:7:1: unknown field `samples`, expected one of `depth`, `weight`, `transparent_shadows`, `area_samples`");
+    let light = |body: &str| error(&format!("{CAMERA}[[lights]]\n{body}"));
+    insta::assert_snapshot!(light("type = \"rect\"\ncorner = [0, 1, 0]\nedge_u = [1, 0, 0]\nedge_v = [-2, 0, 0]\n"),
+        @"scenes/a.toml:10:10: a rect light's edges must not be parallel, found edge_u [1, 0, 0] and edge_v [-2, 0, 0]");
+    insta::assert_snapshot!(light("type = \"rect\"\ncorner = [0, 1, 0]\nedge_u = [0, 0, 0]\nedge_v = [0, 0, 1]\n"),
+        @"scenes/a.toml:9:10: a rect light's edges must be non-zero, found edge_u [0, 0, 0] and edge_v [0, 0, 1]");
+    insta::assert_snapshot!(light("type = \"rect\"\ncorner = [0, 1, 0]\nedge_u = [1, 0, 0]\n"),
+        @"scenes/a.toml:6:1: a rect light needs `edge_v`");
+    insta::assert_snapshot!(light("type = \"rect\"\ncorner = [0, 1, 0]\nedge_u = [1, 0, 0]\nedge_v = [0, 0, 1]\nradius = 1\n"),
+        @"scenes/a.toml:11:10: radius is not a key of a rect light (its keys: corner, edge_u, edge_v, attenuation)");
+    insta::assert_snapshot!(light("type = \"sphere\"\ncenter = [0, 1, 0]\nradius = 0\n"),
+        @"scenes/a.toml:9:10: radius must be > 0, found 0");
+    insta::assert_snapshot!(light("type = \"sphere\"\ncenter = [0, 1, 0]\nradius = 1\nposition = [0, 0, 0]\n"),
+        @"scenes/a.toml:10:12: position is not a key of a sphere light (its keys: center, radius, attenuation)");
+    insta::assert_snapshot!(light("type = \"area\"\n"),
+        @"scenes/a.toml:7:8: unknown light type `area`, expected directional, point, spot, rect or sphere");
+}
+
+#[test]
 fn missing_scene_file_is_an_error_for_the_whole_file() {
     let path = temp_dir("toml-missing").join("nowhere.toml");
     let err = load_toml(&path).unwrap_err();
@@ -391,6 +472,15 @@ fn the_example_in_scenes_md_loads() {
     let start = doc.find("```toml\n").expect("a toml block") + "```toml\n".len();
     let example = &doc[start..start + doc[start..].find("```").unwrap()];
     let scene = parse(example).unwrap_or_else(|e| panic!("{e}"));
-    assert_eq!((scene.lights.len(), scene.objects.len()), (3, 1));
+    assert_eq!((scene.lights.len(), scene.objects.len()), (5, 1));
     assert_eq!(scene.objects[0].material, 0, "material red");
+    assert!(matches!(scene.lights[3].kind, LightKind::Rect { .. }));
+    assert!(matches!(scene.lights[4].kind, LightKind::Sphere { .. }));
+    let render = RenderSettings {
+        max_depth: Some(5),
+        min_weight: Some(0.01),
+        transparent_shadows: Some(false),
+        area_samples: Some(16),
+    };
+    assert_eq!(scene.render, render);
 }
