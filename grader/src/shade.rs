@@ -1,9 +1,9 @@
 //! The tracer assembled from every lecture: cameras (01), intersections
-//! (02–04), and the Whitted tracer of lecture 08 with the shading, shadows,
-//! reflection and refraction of lectures 05–07.
+//! (02–04), the Whitted tracer of lecture 08 with the shading, shadows,
+//! reflection and refraction of lectures 05–07, and lecture 09's BVH where
+//! the scene has enough primitives to need one.
 
 use l01_transforms::Camera;
-use l04_quadrics_transforms::BruteForce;
 use l06_shadows::ShadowMode;
 use l08_ray_tree::{RayTree, TraceSettings, World, trace_recorded};
 use raylab::stats::{RayStats, measure};
@@ -35,13 +35,14 @@ pub fn render_scene(
     settings: &TraceSettings,
 ) -> Result<(Image, RayStats), String> {
     let camera = Camera::from_scene(&scene.camera, scene.width, scene.height).map_err(|e| e.to_string())?;
-    let objects = BruteForce::new(&scene.objects);
+    let objects = l09_acceleration::intersector_for(&scene.objects);
+    let objects = objects.as_ref();
     let (w, h) = (scene.width, scene.height);
     Ok(match aov {
         Some(Aov::Id) => measure(|| l02_ray_casting::object_id_image(&camera, &objects, w, h)),
         Some(Aov::Depth) => measure(|| l02_ray_casting::depth_image(&camera, &objects, w, h)),
         Some(Aov::Normal) => measure(|| l02_ray_casting::normal_image(&camera, &objects, w, h)),
-        None => l08_ray_tree::render(&World::new(scene, &objects), &camera, w, h, settings),
+        None => l08_ray_tree::render(&World::new(scene, objects), &camera, w, h, settings),
     })
 }
 
@@ -55,7 +56,7 @@ pub fn pixel_tree(
         return Err(format!("pixel ({x}, {y}) is outside the {}×{} image", scene.width, scene.height));
     }
     let camera = Camera::from_scene(&scene.camera, scene.width, scene.height).map_err(|e| e.to_string())?;
-    let objects = BruteForce::new(&scene.objects);
+    let objects = l09_acceleration::intersector_for(&scene.objects);
     let ray = camera.pixel_ray(x, y, scene.width, scene.height);
-    Ok(trace_recorded(&World::new(scene, &objects), &ray, settings))
+    Ok(trace_recorded(&World::new(scene, objects.as_ref()), &ray, settings))
 }

@@ -72,3 +72,16 @@ pub trait Intersector: Sync {
         self.closest_hit(ray, range).is_some()
     }
 }
+
+/// A reference to an intersector is one, so `&dyn Intersector` (a scene's
+/// BVH or brute-force group, chosen at run time) goes wherever an
+/// `impl Intersector` is asked for.
+impl<T: Intersector + ?Sized> Intersector for &T {
+    fn closest_hit(&self, ray: &Ray, range: Interval) -> Option<Hit> {
+        (**self).closest_hit(ray, range)
+    }
+
+    fn any_hit(&self, ray: &Ray, range: Interval) -> bool {
+        (**self).any_hit(ray, range)
+    }
+}
