@@ -9,7 +9,7 @@
 //! good enough for sampling, and any 64-bit seed (0 included) is fine.
 //! Book: §6.6 Random numbers that repeat.
 
-use crate::math::Float;
+use crate::math::{Float, Vec3, consts};
 
 /// SplitMix64: the state advances by the golden-ratio constant 0x9E3779B97F4A7C15
 /// and each output is the state scrambled by two xor-shift-multiply rounds.
@@ -40,6 +40,72 @@ impl Rng {
         const BITS: u32 = Float::MANTISSA_DIGITS;
         let scale = 1.0 / (1u64 << BITS) as Float;
         (self.next_u64() >> (64 - BITS)) as Float * scale
+    }
+
+    /// Uniform in [lo, hi): lo + (hi − lo)·u with u = [`Rng::next_float`]. Rounding
+    /// can carry a draw just below hi up to hi itself (in [1, 1 + ε) every u > ½
+    /// would give 1 + ε); such a draw is taken back to the float below hi, so hi is
+    /// never returned. Precondition: lo < hi, and hi − lo finite.
+    pub fn range(&mut self, lo: Float, hi: Float) -> Float {
+        debug_assert!(lo < hi && (hi - lo).is_finite(), "range({lo}, {hi})");
+        (lo + (hi - lo) * self.next_float()).min(hi.next_down())
+    }
+
+    /// A uniform integer in lo..=hi (both ends included), without modulo bias:
+    /// the high 64 bits of x·n, x = [`Rng::next_u64`] and n the number of values,
+    /// are uniform in 0..n once the x whose low bits fall below 2⁶⁴ mod n are
+    /// drawn again (Lemire 2019, "Fast random integer generation in an
+    /// interval"; at most n/2⁶⁴ of the draws). Precondition: lo ≤ hi.
+    pub fn int(&mut self, lo: i64, hi: i64) -> i64 {
+        debug_assert!(lo <= hi, "int({lo}, {hi})");
+        // How many values lie in lo..=hi, less one; the full i64 range is every u64.
+        let span = hi.wrapping_sub(lo) as u64;
+        if span == u64::MAX {
+            return self.next_u64() as i64;
+        }
+        let n = span + 1;
+        let threshold = n.wrapping_neg() % n;
+        loop {
+            let product = u128::from(self.next_u64()) * u128::from(n);
+            if product as u64 >= threshold {
+                return lo.wrapping_add((product >> 64) as i64);
+            }
+        }
+    }
+
+    /// A point uniform in the cube [−half, half)³: x, y, z by [`Rng::range`], in
+    /// that order. Precondition: half > 0.
+    pub fn in_cube(&mut self, half: Float) -> Vec3 {
+        let x = self.range(-half, half);
+        let y = self.range(-half, half);
+        let z = self.range(-half, half);
+        Vec3::new(x, y, z)
+    }
+
+    /// A direction uniform on the unit sphere, by Archimedes' hat-box theorem: the
+    /// height z of a uniform point of the sphere is uniform in [−1, 1], so
+    /// z = 2u₁ − 1, φ = 2π·u₂ (two draws, in that order) and
+    /// (√(1 − z²)·cos φ, √(1 − z²)·sin φ, z). No rejection loop: every call draws
+    /// exactly twice. Unit length up to a few roundings: |v| = 1 within 2ε
+    /// (z is exact, √((1 − z)(1 + z)) carries two roundings, cos and sin one ulp
+    /// each, the products one more).
+    pub fn unit_vector(&mut self) -> Vec3 {
+        let z = 2.0 * self.next_float() - 1.0;
+        let phi = consts::TAU * self.next_float();
+        // (1 − z)(1 + z) rather than 1 − z²: both factors are exact, no cancellation.
+        let s = ((1.0 - z) * (1.0 + z)).sqrt();
+        let (sin, cos) = phi.sin_cos();
+        Vec3::new(s * cos, s * sin, z)
+    }
+
+    /// A point uniform in the ball of radius `radius` around the origin: a
+    /// [`Rng::unit_vector`] times radius·∛u (the volume within ρ grows as ρ³, so
+    /// ρ = radius·∛u has P(ρ < x) = (x/radius)³); three draws. |p| ≤ radius up to
+    /// the same few roundings (2ε relative). Precondition: radius ≥ 0.
+    pub fn in_ball(&mut self, radius: Float) -> Vec3 {
+        debug_assert!(radius >= 0.0, "in_ball({radius})");
+        let direction = self.unit_vector();
+        direction * (radius * self.next_float().cbrt())
     }
 }
 
@@ -107,5 +173,119 @@ mod tests {
         println!("χ² = {chi2:.2} over {bins} bins: {counts:?}");
         assert!(chi2 < 37.70, "χ² = {chi2}");
         assert!((sum / draws as f64 - 0.5).abs() < 0.0046, "mean {}", sum / draws as f64);
+    }
+
+    /// Pearson's χ² of `counts` against the same expected count in every bin.
+    fn chi2(counts: &[u32]) -> f64 {
+        let expected = counts.iter().map(|&c| f64::from(c)).sum::<f64>() / counts.len() as f64;
+        counts.iter().map(|&c| (f64::from(c) - expected).powi(2) / expected).sum()
+    }
+
+    #[test]
+    fn range_never_returns_hi_even_when_rounding_reaches_it() {
+        // [1, 1 + ε) holds one float, 1: lo + (hi − lo)·u = 1 + ε·u rounds to 1 + ε for
+        // every u > ½, so without the step back half the draws would be hi.
+        let mut rng = Rng::new(11);
+        assert!((0..1000).all(|_| rng.range(1.0, 1.0 + Float::EPSILON) == 1.0));
+        // An ordinary interval: every draw in [−3, 5), the mean 1 within 4 standard
+        // errors, 4·(8/√12)/√64000 = 0.0365.
+        let draws = 64_000;
+        let mut sum = 0.0f64;
+        for _ in 0..draws {
+            let x = rng.range(-3.0, 5.0);
+            assert!((-3.0..5.0).contains(&x), "{x}");
+            sum += f64::from(x);
+        }
+        assert!((sum / draws as f64 - 1.0).abs() < 0.0365, "mean {}", sum / draws as f64);
+    }
+
+    #[test]
+    fn int_covers_both_ends_evenly() {
+        // int(−1, 3): five values, 10 000 expected each of 50 000 draws; χ² with 4 degrees
+        // of freedom exceeds 18.47 with probability 0.001 (χ² table).
+        let mut rng = Rng::new(12);
+        let mut counts = [0u32; 5];
+        for _ in 0..50_000 {
+            let k = rng.int(-1, 3);
+            assert!((-1..=3).contains(&k), "{k}");
+            counts[(k + 1) as usize] += 1;
+        }
+        assert!(chi2(&counts) < 18.47, "{counts:?}");
+        // One value; the whole i64 range (n = 2⁶⁴ does not fit a u64); the widest ranges
+        // that do, where the redraw threshold 2⁶⁴ mod n is largest.
+        assert!((0..100).all(|_| rng.int(5, 5) == 5));
+        let _ = rng.int(i64::MIN, i64::MAX);
+        assert!((0..1000).all(|_| rng.int(i64::MIN, i64::MAX - 1) < i64::MAX));
+        assert!((0..1000).all(|_| rng.int(i64::MIN + 1, i64::MAX) > i64::MIN));
+        let half = i64::MAX / 2 + 1; // n = 2⁶³ + 1: almost half of all draws are redrawn
+        assert!((0..1000).all(|_| (0..=half).contains(&rng.int(0, half))));
+    }
+
+    #[test]
+    fn points_in_the_cube_stay_inside_and_centre_on_the_origin() {
+        // [−2, 2)³: every coordinate inside; the mean of each within 4 standard errors,
+        // 4·(4/√12)/√64000 = 0.0183.
+        let mut rng = Rng::new(13);
+        let draws = 64_000;
+        let mut sum = [0.0f64; 3];
+        for _ in 0..draws {
+            let p = rng.in_cube(2.0);
+            for (i, s) in sum.iter_mut().enumerate() {
+                assert!((-2.0..2.0).contains(&p[i]), "{p}");
+                *s += f64::from(p[i]);
+            }
+        }
+        assert!(sum.iter().all(|s| (s / draws as f64).abs() < 0.0183), "{sum:?}");
+    }
+
+    #[test]
+    fn unit_vectors_are_unit_and_uniform_on_the_sphere() {
+        // Unit length within 2ε (the doc's bound; measured 1ε in f32 and f64). Uniform on the sphere: by Archimedes
+        // every coordinate, x included (which mixes √(1 − z²) and cos φ), is uniform on
+        // [−1, 1]: 16 bins, χ² < 37.70 (15 degrees of freedom, p = 0.001); the eight
+        // octants are equally likely: χ² < 24.32 (7 degrees, p = 0.001); the mean vector
+        // is 0 within 4 standard errors per coordinate, 4·(1/√3)/√64000 = 0.0092.
+        let mut rng = Rng::new(14);
+        let (draws, bins) = (64_000, 16);
+        let (mut x_bins, mut octants, mut sum) = (vec![0u32; bins], [0u32; 8], [0.0f64; 3]);
+        let mut worst = 0.0f64;
+        for _ in 0..draws {
+            let v = rng.unit_vector();
+            let error = f64::from((v.length() - 1.0).abs() / Float::EPSILON);
+            worst = worst.max(error);
+            assert!(error <= 2.0, "|{v}| = 1 ± {error}ε");
+            x_bins[(((v.x + 1.0) / 2.0 * bins as Float) as usize).min(bins - 1)] += 1;
+            octants[usize::from(v.x > 0.0) + 2 * usize::from(v.y > 0.0) + 4 * usize::from(v.z > 0.0)] += 1;
+            for (s, c) in sum.iter_mut().zip(v.to_array()) {
+                *s += f64::from(c);
+            }
+        }
+        println!("unit vectors: |v| = 1 within {worst:.2}ε; x bins {x_bins:?}; octants {octants:?}");
+        assert!(chi2(&x_bins) < 37.70, "x bins {x_bins:?}");
+        assert!(chi2(&octants) < 24.32, "octants {octants:?}");
+        assert!(sum.iter().all(|s| (s / draws as f64).abs() < 0.0092), "{sum:?}");
+    }
+
+    #[test]
+    fn points_in_the_ball_are_inside_and_uniform_in_volume() {
+        // Radius 2.5: |p| ≤ r within 2ε. Uniform in volume: P(|p| < ρ) = (ρ/r)³, so
+        // (|p|/r)³ is uniform on [0, 1]: 16 bins, χ² < 37.70 (15 degrees, p = 0.001); the
+        // mean point is 0 within 4 standard errors, 4·(r/√5)/√64000 = 0.0177 (a coordinate
+        // of a uniform point of the ball has variance r²/5).
+        let mut rng = Rng::new(15);
+        let (draws, bins, r) = (64_000, 16, 2.5);
+        let (mut shells, mut sum) = (vec![0u32; bins], [0.0f64; 3]);
+        for _ in 0..draws {
+            let p = rng.in_ball(r);
+            let rho = p.length() / r;
+            assert!(rho <= 1.0 + 2.0 * Float::EPSILON, "|{p}| = {}", p.length());
+            shells[((rho.powi(3) * bins as Float) as usize).min(bins - 1)] += 1;
+            for (s, c) in sum.iter_mut().zip(p.to_array()) {
+                *s += f64::from(c);
+            }
+        }
+        assert!(chi2(&shells) < 37.70, "shells {shells:?}");
+        assert!(sum.iter().all(|s| (s / draws as f64).abs() < 0.0177), "{sum:?}");
+        assert_eq!(Rng::new(1).in_ball(0.0), Vec3::ZERO);
     }
 }

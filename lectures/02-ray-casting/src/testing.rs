@@ -1,52 +1,7 @@
-//! Test support: a seeded pseudo-random generator and an accurate reference
-//! for ray–sphere roots (used by the tests of `sphere.rs` and `group.rs`).
+//! Test support: an accurate reference for ray–sphere roots (used by the
+//! tests of `sphere.rs`). The seeded generator is the kit's `raylab::random::Rng`.
 
 use raylab::{Float, Vec3};
-
-/// SplitMix64 (Steele, Lea, Flood 2014): a tiny seeded generator, so the
-/// tests draw the same rays on every machine without the `rand` crate.
-pub struct Rng(u64);
-
-impl Rng {
-    pub fn new(seed: u64) -> Self {
-        Self(seed)
-    }
-
-    pub fn next_u64(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-
-    /// Uniform in [0, 1), with 53 random bits.
-    pub fn unit(&mut self) -> f64 {
-        (self.next_u64() >> 11) as f64 / (1u64 << 53) as f64
-    }
-
-    /// Uniform in [lo, hi).
-    pub fn range(&mut self, lo: f64, hi: f64) -> Float {
-        (lo + (hi - lo) * self.unit()) as Float
-    }
-
-    /// Uniform on the unit sphere (rejection from the cube), rounded to `Float`.
-    pub fn direction(&mut self) -> Vec3 {
-        loop {
-            let v = [self.unit() * 2.0 - 1.0, self.unit() * 2.0 - 1.0, self.unit() * 2.0 - 1.0];
-            let len2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
-            if len2 > 1e-4 && len2 <= 1.0 {
-                let len = len2.sqrt();
-                return Vec3::new((v[0] / len) as Float, (v[1] / len) as Float, (v[2] / len) as Float);
-            }
-        }
-    }
-
-    /// Uniform in the ball of radius `radius` around the origin.
-    pub fn in_ball(&mut self, radius: f64) -> Vec3 {
-        self.direction() * (radius * self.unit().cbrt()) as Float
-    }
-}
 
 /// A `Float` widened to `f64` without rounding.
 // With the kit's `f64` feature this cast is f64 → f64, which clippy flags.

@@ -144,10 +144,10 @@ pub fn hit_polygon(ray: &Ray, vertices: &[Vec3], range: Interval) -> Option<Hit>
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::testing::Rng;
     use approx::assert_relative_eq;
     use raylab::Float;
     use raylab::math::consts::PI;
+    use raylab::random::Rng;
 
     fn v2(points: &[[Float; 2]]) -> Vec<Vec2> {
         points.iter().map(|&p| Vec2::from_array(p)).collect()

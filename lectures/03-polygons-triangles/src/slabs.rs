@@ -138,8 +138,8 @@ pub fn hit_box(ray: &Ray, min: Vec3, max: Vec3, range: Interval) -> Option<Hit> 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::testing::Rng;
     use approx::assert_relative_eq;
+    use raylab::random::Rng;
 
     /// The cube [−1, 1]³.
     const LO: Vec3 = Vec3::splat(-1.0);

@@ -118,8 +118,10 @@ pub fn hit_cone(ray: &Ray, range: Interval) -> Option<Hit> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::test_support::{EPS, Rng, angle_to, d3};
+    use crate::test_support::{EPS, angle_to, d3};
     use approx::{assert_abs_diff_eq, assert_relative_eq};
+    use raylab::math::consts::TAU;
+    use raylab::random::Rng;
 
     fn ray(o: [Float; 3], d: [Float; 3]) -> Ray {
         Ray::new(Vec3::from_array(o), Vec3::from_array(d))
@@ -242,10 +244,10 @@ mod tests {
         // Tolerance 64ε as for the cylinder (|O| ≤ 10; measured: a few ε).
         let mut rng = Rng::new(3);
         for _ in 0..5_000 {
-            let phi = rng.range(0.0, std::f64::consts::TAU) as Float;
+            let phi = rng.range(0.0, TAU);
             let rim = Vec3::new(phi.cos(), phi.sin(), 0.0);
             let k = rng.range(0.25, 2.0);
-            let origin = rim * (1.0 + k * rng.range(1.25, 4.0)) as Float - Vec3::Z * k as Float;
+            let origin = rim * (1.0 + k * rng.range(1.25, 4.0)) - Vec3::Z * k;
             let h = hit_cone(&Ray::new(origin, rim - origin), Interval::POSITIVE)
                 .unwrap_or_else(|| panic!("missed the rim point {rim} from {origin}"));
             assert!((h.t - 1.0).abs() <= 64.0 * EPS, "leaked through the rim at {rim}: t = {}", h.t);
@@ -299,11 +301,11 @@ mod tests {
         // not compared within 1e-3 of the rim or the apex.
         let mut rng = Rng::new(5);
         for _ in 0..10_000 {
-            let origin = rng.vec_in(-3.0, 3.0);
+            let origin = rng.in_cube(3.0);
             let z = rng.range(0.1, 0.7);
-            let (r, phi) = (0.8 * (1.0 - z) * rng.next_f64().sqrt(), rng.range(0.0, std::f64::consts::TAU));
-            let target = Vec3::new((r * phi.cos()) as Float, (r * phi.sin()) as Float, z as Float);
-            let ray = Ray::new(origin, (target - origin) * rng.range(0.5, 2.0) as Float);
+            let (r, phi) = (0.8 * (1.0 - z) * rng.next_float().sqrt(), rng.range(0.0, TAU));
+            let target = Vec3::new(r * phi.cos(), r * phi.sin(), z);
+            let ray = Ray::new(origin, (target - origin) * rng.range(0.5, 2.0));
             let h = hit_cone(&ray, Interval::POSITIVE).expect("a ray through the inside hits");
             let (t, n) = classic_f64(d3(ray.origin), d3(ray.dir)).expect("the reference hits");
             // Where the reference hit lies, in f64.

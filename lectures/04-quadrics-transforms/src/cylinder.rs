@@ -101,8 +101,10 @@ pub fn hit_cylinder(ray: &Ray, range: Interval) -> Option<Hit> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::test_support::{EPS, Rng, angle_to, d3};
+    use crate::test_support::{EPS, angle_to, d3};
     use approx::{assert_abs_diff_eq, assert_relative_eq};
+    use raylab::math::consts::TAU;
+    use raylab::random::Rng;
 
     fn ray(o: [Float; 3], d: [Float; 3]) -> Ray {
         Ray::new(Vec3::from_array(o), Vec3::from_array(d))
@@ -215,12 +217,12 @@ mod tests {
         // of grazing entries (measured: 4ε). Normals: unit vectors from p, 1e-4.
         let mut rng = Rng::new(2);
         for _ in 0..5_000 {
-            let phi = rng.range(0.0, std::f64::consts::TAU) as Float;
-            let top = rng.next_f64() < 0.5;
+            let phi = rng.range(0.0, TAU);
+            let top = rng.next_float() < 0.5;
             let rim = Vec3::new(phi.cos(), phi.sin(), if top { 1.0 } else { 0.0 });
             let radial = Vec3::new(phi.cos(), phi.sin(), 0.0);
             let axial = Vec3::new(0.0, 0.0, if top { 1.0 } else { -1.0 });
-            let origin = rim + radial * rng.range(0.25, 2.0) as Float + axial * rng.range(0.25, 2.0) as Float;
+            let origin = rim + radial * rng.range(0.25, 2.0) + axial * rng.range(0.25, 2.0);
             let h = hit_cylinder(&Ray::new(origin, rim - origin), Interval::POSITIVE)
                 .unwrap_or_else(|| panic!("missed the rim point {rim} from {origin}"));
             assert!((h.t - 1.0).abs() <= 64.0 * EPS, "leaked through the rim at {rim}: t = {}", h.t);
@@ -293,11 +295,10 @@ mod tests {
         // Normals are compared away from the rims (1e-3), where side and cap meet.
         let mut rng = Rng::new(4);
         for _ in 0..10_000 {
-            let origin = rng.vec_in(-3.0, 3.0);
-            let (r, phi) = (0.9 * rng.next_f64().sqrt(), rng.range(0.0, std::f64::consts::TAU));
-            let target =
-                Vec3::new((r * phi.cos()) as Float, (r * phi.sin()) as Float, rng.range(0.1, 0.9) as Float);
-            let ray = Ray::new(origin, (target - origin) * rng.range(0.5, 2.0) as Float);
+            let origin = rng.in_cube(3.0);
+            let (r, phi) = (0.9 * rng.next_float().sqrt(), rng.range(0.0, TAU));
+            let target = Vec3::new(r * phi.cos(), r * phi.sin(), rng.range(0.1, 0.9));
+            let ray = Ray::new(origin, (target - origin) * rng.range(0.5, 2.0));
             let h = hit_cylinder(&ray, Interval::POSITIVE).expect("a ray through the inside hits");
             let (t, n) = classic_f64(d3(ray.origin), d3(ray.dir)).expect("the reference hits");
             assert!((h.t as f64 - t).abs() <= 16.0 * EPS as f64 * t.max(1.0), "t {} vs {t}", h.t);

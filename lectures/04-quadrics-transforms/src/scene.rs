@@ -94,9 +94,11 @@ impl Intersector for BruteForce<'_> {
 mod tests {
     use super::*;
     use crate::test_support::{
-        EPS, Rng, angle_to, d3, ellipsoid_f64, ellipsoid_normal_sensitivity, ellipsoid_transform, unit,
+        EPS, angle_to, d3, ellipsoid_f64, ellipsoid_normal_sensitivity, ellipsoid_transform, unit,
     };
     use approx::{assert_abs_diff_eq, assert_relative_eq};
+    use raylab::math::consts::TAU;
+    use raylab::random::Rng;
     use raylab::scene::{Mesh, Transform};
     use raylab::stats::measure;
     use raylab::{Float, Mat4, Vec3};
@@ -246,7 +248,7 @@ mod tests {
         let mut rng = Rng::new(10);
         let mut compared = 0;
         for _ in 0..5_000 {
-            let (theta, phi) = (rng.range(0.05, 3.09), rng.range(0.0, std::f64::consts::TAU));
+            let (theta, phi) = (rng.range(0.05, 3.09) as f64, rng.range(0.0, TAU) as f64);
             let local = [theta.sin() * phi.cos(), theta.sin() * phi.sin(), theta.cos()];
             let p = crate::test_support::rotate([0, 1, 2].map(|i| semi[i] * local[i]), axis, angle);
             let n = crate::test_support::rotate(unit([0, 1, 2].map(|i| local[i] / semi[i])), axis, angle);
@@ -361,8 +363,8 @@ mod tests {
         let mut rng = Rng::new(11);
         let mut hits = 0;
         for _ in 0..1_000 {
-            let ray = Ray::new(rng.vec_in(-4.0, 4.0), rng.vec_in(-1.0, 1.0));
-            let range = Interval::new(0.0, rng.range(0.5, 12.0) as Float);
+            let ray = Ray::new(rng.in_cube(4.0), rng.in_cube(1.0));
+            let range = Interval::new(0.0, rng.range(0.5, 12.0));
             let closest = scene.closest_hit(&ray, range);
             assert_eq!(scene.any_hit(&ray, range), closest.is_some(), "{ray:?} in {range:?}");
             for (i, o) in objects.iter().enumerate() {

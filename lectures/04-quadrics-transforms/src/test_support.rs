@@ -1,42 +1,14 @@
-//! Helpers shared by the unit tests: a seeded random generator, f64 vector
-//! arithmetic for independent reference computations (plain arrays, so the
-//! reference never goes through the `Float` code under test), angle measures
-//! and a reference unit sphere for the transform tests.
+//! Helpers shared by the unit tests: f64 vector arithmetic for independent
+//! reference computations (plain arrays, so the reference never goes through
+//! the `Float` code under test), angle measures and a reference unit sphere
+//! for the transform tests. The seeded generator is the kit's
+//! `raylab::random::Rng`.
 
 use raylab::scene::Transform;
 use raylab::{Float, Hit, Interval, Mat4, Ray, Vec3};
 
 /// Machine epsilon of the precision under test.
 pub const EPS: Float = Float::EPSILON;
-
-/// A small, seeded generator (SplitMix64): the same rays on every run.
-pub struct Rng(u64);
-
-impl Rng {
-    pub fn new(seed: u64) -> Self {
-        Self(seed)
-    }
-
-    /// Uniform in [0, 1).
-    pub fn next_f64(&mut self) -> f64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^= z >> 31;
-        (z >> 11) as f64 / (1u64 << 53) as f64
-    }
-
-    /// Uniform in [lo, hi).
-    pub fn range(&mut self, lo: f64, hi: f64) -> f64 {
-        lo + (hi - lo) * self.next_f64()
-    }
-
-    /// A point uniform in the box [lo, hi]³ (rounded to `Float`).
-    pub fn vec_in(&mut self, lo: f64, hi: f64) -> Vec3 {
-        Vec3::new(self.range(lo, hi) as Float, self.range(lo, hi) as Float, self.range(lo, hi) as Float)
-    }
-}
 
 /// A vector as f64 numbers (exact: every `Float` is an f64).
 pub fn d3(v: Vec3) -> [f64; 3] {

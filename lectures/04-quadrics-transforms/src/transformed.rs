@@ -72,10 +72,12 @@ mod tests {
     use super::*;
     use crate::hit_cylinder;
     use crate::test_support::{
-        EPS, Rng, angle_to, d3, ellipsoid_f64, ellipsoid_normal_sensitivity, ellipsoid_transform, unit,
+        EPS, angle_to, d3, ellipsoid_f64, ellipsoid_normal_sensitivity, ellipsoid_transform, unit,
         unit_sphere,
     };
     use approx::{assert_abs_diff_eq, assert_relative_eq};
+    use raylab::math::consts::TAU;
+    use raylab::random::Rng;
     use raylab::{Float, Vec2};
 
     /// T(1, 2, 3)·S(2, 0.5, 4) and its inverse written by hand: S(1/2, 2, 1/4)·T(−1, −2, −3).
@@ -124,22 +126,16 @@ mod tests {
         // R₁·S·R₂ + translation, scales in [1/4, 4] (condition number ≤ 16), random
         // directions; tolerance 64ε·|A t| covers the inverse and the products.
         let mut rng = Rng::new(6);
-        let turn = |rng: &mut Rng| {
-            Mat4::from_axis_angle(rng.vec_in(-1.0, 1.0).normalize(), rng.range(0.0, 6.0) as Float)
-        };
+        let turn = |rng: &mut Rng| Mat4::from_axis_angle(rng.in_cube(1.0).normalize(), rng.range(0.0, 6.0));
         for _ in 0..1_000 {
-            let scale = Vec3::new(
-                rng.range(0.25, 4.0) as Float,
-                rng.range(0.25, 4.0) as Float,
-                rng.range(0.25, 4.0) as Float,
-            );
-            let world_from_object = Mat4::from_translation(rng.vec_in(-5.0, 5.0))
+            let scale = Vec3::new(rng.range(0.25, 4.0), rng.range(0.25, 4.0), rng.range(0.25, 4.0));
+            let world_from_object = Mat4::from_translation(rng.in_cube(5.0))
                 * turn(&mut rng)
                 * Mat4::from_scale(scale)
                 * turn(&mut rng);
             let object_from_world = world_from_object.inverse();
-            let n = rng.vec_in(-1.0, 1.0);
-            let tangent = n.normalize().any_orthonormal_vector() * rng.range(0.5, 2.0) as Float;
+            let n = rng.in_cube(1.0);
+            let tangent = n.normalize().any_orthonormal_vector() * rng.range(0.5, 2.0);
             let world_tangent = world_from_object.transform_vector3(tangent);
             let product = normal_to_world(n, &object_from_world).dot(world_tangent);
             assert!(product.abs() <= 64.0 * EPS * world_tangent.length(), "n_w · A t = {product}");
@@ -178,8 +174,8 @@ mod tests {
         let tr = ellipsoid_transform(center, semi, axis, angle);
         let mut rng = Rng::new(7);
         for _ in 0..5_000 {
-            let origin = rng.vec_in(-6.0, 6.0);
-            let inside = tr.world_from_object.transform_point3(rng.vec_in(-0.5, 0.5));
+            let origin = rng.in_cube(6.0);
+            let inside = tr.world_from_object.transform_point3(rng.in_cube(0.5));
             let world = Ray::new(origin, inside - origin);
             let Some((t, n)) = ellipsoid_f64(d3(world.origin), d3(world.dir), center, semi, axis, angle)
             else {
@@ -207,7 +203,7 @@ mod tests {
         let mut rng = Rng::new(8);
         let mut compared = 0;
         for _ in 0..20_000 {
-            let (theta, phi) = (rng.range(0.05, 3.09), rng.range(0.0, std::f64::consts::TAU));
+            let (theta, phi) = (rng.range(0.05, 3.09) as f64, rng.range(0.0, TAU) as f64);
             let local = [theta.sin() * phi.cos(), theta.sin() * phi.sin(), theta.cos()];
             let p = [0, 1, 2].map(|i| center[i] + semi[i] * local[i]);
             let n = unit([0, 1, 2].map(|i| local[i] / semi[i]));

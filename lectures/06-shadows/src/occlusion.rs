@@ -121,7 +121,9 @@ pub fn transmittance(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::testing::{Shapes, plane, see_through, sphere};
+    use crate::testing::{plane, see_through, sphere};
+    use l04_quadrics_transforms::BruteForce;
+    use raylab::random::Rng;
     use raylab::scene::Object;
     use raylab::stats::measure;
     use raylab::{Hit, Vec3};
@@ -145,7 +147,7 @@ mod tests {
     /// Whether a unit sphere at `center` blocks a light 5 above the origin, seen from it.
     fn blocks(center: Vec3) -> bool {
         let objects = [sphere(center, 1.0, 0)];
-        occluded(&Shapes::new(&objects), Vec3::ZERO, &point_light(Vec3::ZERO, v(0.0, 5.0, 0.0)))
+        occluded(&BruteForce::new(&objects), Vec3::ZERO, &point_light(Vec3::ZERO, v(0.0, 5.0, 0.0)))
     }
 
     #[test]
@@ -183,17 +185,17 @@ mod tests {
         // Distance ∞: a sphere 1000 away on the ray blocks, one 5 to the side of it does not.
         let l = v(0.0, 1.0, 0.0);
         let far = [sphere(v(0.0, 1000.0, 0.0), 1.0, 0)];
-        assert!(occluded(&Shapes::new(&far), Vec3::ZERO, &directional(l)));
+        assert!(occluded(&BruteForce::new(&far), Vec3::ZERO, &directional(l)));
         let aside = [sphere(v(5.0, 1000.0, 0.0), 1.0, 0)];
-        assert!(!occluded(&Shapes::new(&aside), Vec3::ZERO, &directional(l)));
+        assert!(!occluded(&BruteForce::new(&aside), Vec3::ZERO, &directional(l)));
         // A plane y = 10⁶ facing away from the point blocks as well (hit from behind).
         let sky = [plane(Vec3::Y, 1e6, 0)];
-        assert!(occluded(&Shapes::new(&sky), Vec3::ZERO, &directional(l)));
+        assert!(occluded(&BruteForce::new(&sky), Vec3::ZERO, &directional(l)));
     }
 
     /// An intersector that records which query it was asked.
     struct Spy<'a> {
-        inner: Shapes<'a>,
+        inner: BruteForce<'a>,
         closest: AtomicUsize,
         any: AtomicUsize,
     }
@@ -213,7 +215,7 @@ mod tests {
     fn occluded_asks_any_hit_once_and_counts_one_shadow_ray() {
         let objects = [sphere(v(0.0, 2.0, 0.0), 1.0, 0)];
         let spy =
-            Spy { inner: Shapes::new(&objects), closest: AtomicUsize::new(0), any: AtomicUsize::new(0) };
+            Spy { inner: BruteForce::new(&objects), closest: AtomicUsize::new(0), any: AtomicUsize::new(0) };
         let (blocked, stats) = measure(|| occluded(&spy, Vec3::ZERO, &directional(Vec3::Y)));
         assert!(blocked);
         assert_eq!((spy.any.into_inner(), spy.closest.into_inner()), (1, 0), "one any_hit, no closest_hit");
@@ -225,7 +227,7 @@ mod tests {
     /// materials `materials`.
     fn through(objects: &[Object], materials: &[Material]) -> (Color, u64) {
         let sample = point_light(Vec3::ZERO, v(0.0, 10.0, 0.0));
-        let (t, stats) = measure(|| transmittance(&Shapes::new(objects), materials, Vec3::ZERO, &sample));
+        let (t, stats) = measure(|| transmittance(&BruteForce::new(objects), materials, Vec3::ZERO, &sample));
         (t, stats.get(Counter::ShadowRays))
     }
 
@@ -280,7 +282,7 @@ mod tests {
             (0..20).map(|i| sphere(v(0.0, 2.0 + 2.5 * i as Float, 0.0), 1.0, 0)).collect();
         let sample = point_light(Vec3::ZERO, v(0.0, 100.0, 0.0));
         let (t, stats) =
-            measure(|| transmittance(&Shapes::new(&objects), &[see_through(WHITE)], Vec3::ZERO, &sample));
+            measure(|| transmittance(&BruteForce::new(&objects), &[see_through(WHITE)], Vec3::ZERO, &sample));
         assert_eq!((t, stats.get(Counter::ShadowRays)), (WHITE, 41));
     }
 
@@ -293,9 +295,9 @@ mod tests {
         // scales with the segment's origin. Taken from |p| alone it would stay on the near
         // side about half the time and cross again: ¼, three segments.
         let objects = [plane(Vec3::Y, 0.0, 0)];
-        let scene = Shapes::new(&objects);
+        let scene = BruteForce::new(&objects);
         let from = v(0.0, -500.0, -700.0);
-        let mut rng = crate::testing::Rng::new(0x0_1a7e);
+        let mut rng = Rng::new(0x0_1a7e);
         for _ in 0..2000 {
             let aim = v(rng.range(-0.1, 0.1), 0.0, rng.range(-0.1, 0.1));
             let (t, stats) = measure(|| {

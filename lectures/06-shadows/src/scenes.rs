@@ -6,13 +6,14 @@
 use std::path::PathBuf;
 
 use l01_transforms::Camera;
+use l04_quadrics_transforms::BruteForce;
 use l05_shading::{LightSample, illuminate};
 use raylab::render::render_image;
 use raylab::scene::{self, Scene, Shape};
 use raylab::stats::{Counter, measure};
 use raylab::{Color, Float, Hit, Image, Intersector, Interval, Ray, Vec3};
 
-use crate::testing::Shapes;
+use crate::testing::without;
 use crate::{
     LIGHT_MARGIN, ShadowSettings, Surface, occluded, offset_origin, offset_origin_fixed_normal,
     offset_origin_fixed_t, shade_with_shadows,
@@ -39,7 +40,7 @@ pub fn load(name: &str) -> Scene {
 /// The primary hit of every pixel and the origin of its ray (the eye), row-major.
 fn primary_hits(scene: &Scene) -> Vec<Option<(Hit, Vec3)>> {
     let camera = Camera::from_scene(&scene.camera, scene.width, scene.height).expect("a valid camera");
-    let shapes = Shapes::new(&scene.objects);
+    let shapes = BruteForce::new(&scene.objects);
     let mut hits = Vec::new();
     for y in 0..scene.height {
         for x in 0..scene.width {
@@ -85,13 +86,13 @@ fn shadow_queries(scene: &Scene) -> Vec<Query> {
 /// starts on cannot block it toward a light it faces; leave that object out and start at p.
 fn exactly_occluded(scene: &Scene, query: &Query) -> bool {
     let Query { hit, sample, .. } = query;
-    occluded(&Shapes::new(&scene.objects).without(hit.object), hit.point, sample)
+    occluded(&BruteForce::new(&without(&scene.objects, hit.object)), hit.point, sample)
 }
 
 /// The scene rendered with shadows, and the shadow rays it cast.
 pub fn render(scene: &Scene, settings: ShadowSettings) -> (Image, u64) {
     let camera = Camera::from_scene(&scene.camera, scene.width, scene.height).expect("a valid camera");
-    let shapes = Shapes::new(&scene.objects);
+    let shapes = BruteForce::new(&scene.objects);
     let ((image, _), stats) = measure(|| {
         render_image(scene.width, scene.height, |x, y| {
             let ray = camera.pixel_ray(x, y, scene.width, scene.height);
@@ -124,7 +125,7 @@ fn every_scene_is_small_and_made_of_spheres_planes_and_boxes() {
 fn first_blocker(scene: &Scene, offset: Offset, query: &Query) -> Option<usize> {
     let dir = query.sample.direction;
     let range = Interval::new(0.0, query.sample.distance * LIGHT_MARGIN);
-    Shapes::new(&scene.objects).closest_hit(&Ray::new(query.from(offset), dir), range).map(|b| b.object)
+    BruteForce::new(&scene.objects).closest_hit(&Ray::new(query.from(offset), dir), range).map(|b| b.object)
 }
 
 #[test]
@@ -175,7 +176,7 @@ fn offset_shadow_rays_agree_with_the_exact_answer() {
     // edges; allow 0.5% there and 0.05% elsewhere.
     for name in SCENES {
         let scene = load(name);
-        let shapes = Shapes::new(&scene.objects);
+        let shapes = BruteForce::new(&scene.objects);
         let queries = shadow_queries(&scene);
         let differ = queries
             .iter()
@@ -224,7 +225,7 @@ fn coloured_shadows_show_every_single_and_double_blocking() {
     // blocked (the mix of the other two), and for each pair some see just that pair
     // blocked (the third colour): the three shadows overlap as the scene intends.
     let scene = load("coloured-shadows.toml");
-    let shapes = Shapes::new(&scene.objects);
+    let shapes = BruteForce::new(&scene.objects);
     let mut seen = [[false; 3]; 3];
     for (hit, eye) in primary_hits(&scene).into_iter().flatten() {
         if hit.object != 0 {

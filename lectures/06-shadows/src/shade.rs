@@ -130,8 +130,10 @@ pub fn shade_with_shadows(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::testing::{Rng, Shapes, plane, see_through, sphere};
+    use crate::testing::{plane, see_through, sphere};
+    use l04_quadrics_transforms::BruteForce;
     use l05_shading::shade_local;
+    use raylab::random::Rng;
     use raylab::scene::{Attenuation, LightKind, Object, Specular};
     use raylab::stats::{Counter, measure};
     use raylab::{Float, Ray, radians};
@@ -183,7 +185,7 @@ mod tests {
         let materials = materials();
         let (hit, v, origin) = floor_hit(x, z);
         let surface = Surface { material: &materials[0], diffuse: materials[0].diffuse, hit, v, origin };
-        let scene = Shapes::new(objects);
+        let scene = BruteForce::new(objects);
         let (color, stats) =
             measure(|| shade_with_shadows(&scene, &materials, &surface, lights, AMBIENT, settings(mode)));
         (color, stats.get(Counter::ShadowRays))
@@ -320,15 +322,14 @@ mod tests {
         // would get 0.05.
         let materials = materials();
         let objects = [plane(Vec3::Y, 0.0, 0)];
-        let scene = Shapes::new(&objects);
+        let scene = BruteForce::new(&objects);
         let lights = [directional(Vec3::Y, true)];
         let eye = v(0.0, 500.0, 700.0);
         let mut rng = Rng::new(0xe_7e);
         for _ in 0..2000 {
             let aim = v(rng.range(-0.1, 0.1), 0.0, rng.range(-0.1, 0.1));
             let ray = Ray::new(eye, (aim - eye).normalize());
-            let hit =
-                crate::testing::hit_plane(&ray, Vec3::Y, 0.0, raylab::Interval::POSITIVE).expect("aimed");
+            let hit = scene.closest_hit(&ray, raylab::Interval::POSITIVE).expect("aimed");
             let surface = Surface {
                 material: &materials[0],
                 diffuse: materials[0].diffuse,
@@ -377,7 +378,7 @@ mod tests {
             ..Material::default()
         };
         let objects = [plane(Vec3::Y, 0.0, 0)];
-        let scene = Shapes::new(&objects);
+        let scene = BruteForce::new(&objects);
         for _ in 0..500 {
             let (hit, eye, origin) = floor_hit(rng.range(-3.0, 3.0), rng.range(-3.0, 3.0));
             let surface = Surface { material: &shiny, diffuse: shiny.diffuse, hit, v: eye, origin };

@@ -129,8 +129,9 @@ pub fn shade_area_light(
 #[allow(clippy::useless_conversion)]
 mod tests {
     use super::*;
-    use crate::testing::{Shapes, object, see_through};
+    use crate::testing::{object, see_through};
     use crate::{ShadowMode, shade_with_shadows};
+    use l04_quadrics_transforms::BruteForce;
     use l05_shading::shade_local;
     use raylab::scene::{Attenuation, LightKind, Object, Shape};
     use raylab::stats::{Counter, measure};
@@ -198,7 +199,7 @@ mod tests {
         let (hit, eye, origin) = floor_hit(x, z);
         let surface = Surface { material: &materials[0], diffuse: WHITE, hit, v: eye, origin };
         let (color, stats) =
-            measure(|| shade_area_light(&Shapes::new(objects), &materials, &surface, light, settings));
+            measure(|| shade_area_light(&BruteForce::new(objects), &materials, &surface, light, settings));
         (color, stats.get(Counter::ShadowRays))
     }
 
@@ -213,7 +214,7 @@ mod tests {
         let material = raylab::scene::Material::default();
         let (hit, eye, origin) = floor_hit(x, z);
         let surface = Surface { material: &material, diffuse: WHITE, hit, v: eye, origin };
-        let scene = Shapes::new(objects);
+        let scene = BruteForce::new(objects);
         let (color, stats) = measure(|| {
             shade_with_shadows(&scene, std::slice::from_ref(&material), &surface, lights, AMBIENT, settings)
         });

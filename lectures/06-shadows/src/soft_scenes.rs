@@ -10,13 +10,13 @@
 use std::ops::Range;
 
 use l01_transforms::Camera;
+use l04_quadrics_transforms::BruteForce;
 use raylab::render::render_map;
 use raylab::scene::{LightKind, Scene, Shape};
 use raylab::stats::{Counter, measure};
 use raylab::{Color, Image, Intersector};
 
 use crate::scenes::{load, render};
-use crate::testing::Shapes;
 use crate::{ShadowMode, ShadowSettings, Surface, shade_with_shadows};
 
 /// The rect-light scenes and their sample counts.
@@ -44,8 +44,8 @@ fn shade_rows(
     rows: Range<u32>,
 ) -> Vec<(Color, usize)> {
     let camera = Camera::from_scene(&scene.camera, scene.width, scene.height).expect("a valid camera");
-    let shapes = Shapes::new(&scene.objects);
-    let shadows = if blockers { shapes } else { Shapes::new(&[]) };
+    let shapes = BruteForce::new(&scene.objects);
+    let shadows = if blockers { shapes } else { BruteForce::new(&[]) };
     let (w, h) = (scene.width, scene.height);
     let (pixels, _) = render_map(w, rows.end - rows.start, |x, y| {
         let ray = camera.pixel_ray(x, rows.start + y, w, h);
@@ -81,7 +81,8 @@ fn floor_visibility(scene: &Scene, settings: ShadowSettings) -> Vec<Option<f64>>
 
 #[test]
 fn every_soft_scene_is_small_and_made_of_spheres_planes_and_boxes() {
-    // What this lecture's test intersector (`testing::Shapes`) can hit, at most 200 × 150.
+    // The shapes of this lecture's other scenes (convex, as `scenes.rs` needs for its exact
+    // answer), at most 200 × 150 so that a test renders them in well under a second.
     for name in RECT.map(|(name, _)| name).into_iter().chain([SPHERE]) {
         let scene = load(name);
         assert!(scene.width <= 200 && scene.height <= 150, "{name}");
