@@ -1,13 +1,15 @@
 //! The tracer assembled from every lecture: cameras (01), intersections
 //! (02–04), the Whitted tracer of lecture 08 with the shading, shadows,
-//! reflection and refraction of lectures 05–07, and lecture 09's BVH where
-//! the scene has enough primitives to need one.
+//! reflection and refraction of lectures 05–07, lecture 09's BVH where the
+//! scene has enough primitives to need one, and lecture 10's textures.
 
 use l01_transforms::Camera;
 use l06_shadows::ShadowMode;
 use l08_ray_tree::{RayTree, TraceSettings, World, trace_recorded};
+use l10_textures_sampling::surface_color;
+use raylab::scene::Material;
 use raylab::stats::{RayStats, measure};
-use raylab::{Color, Image, Scene};
+use raylab::{Color, Hit, Image, Scene};
 
 use crate::Aov;
 
@@ -42,7 +44,10 @@ pub fn render_scene(
         Some(Aov::Id) => measure(|| l02_ray_casting::object_id_image(&camera, &objects, w, h)),
         Some(Aov::Depth) => measure(|| l02_ray_casting::depth_image(&camera, &objects, w, h)),
         Some(Aov::Normal) => measure(|| l02_ray_casting::normal_image(&camera, &objects, w, h)),
-        None => l08_ray_tree::render(&World::new(scene, objects), &camera, w, h, settings),
+        None => {
+            let surface = |hit: &Hit, material: &Material| surface_color(scene, hit, material);
+            l08_ray_tree::render(&World::new(scene, objects).with_surface(&surface), &camera, w, h, settings)
+        }
     })
 }
 
@@ -58,5 +63,6 @@ pub fn pixel_tree(
     let camera = Camera::from_scene(&scene.camera, scene.width, scene.height).map_err(|e| e.to_string())?;
     let objects = l09_acceleration::intersector_for(&scene.objects);
     let ray = camera.pixel_ray(x, y, scene.width, scene.height);
-    Ok(trace_recorded(&World::new(scene, objects.as_ref()), &ray, settings))
+    let surface = |hit: &Hit, material: &Material| surface_color(scene, hit, material);
+    Ok(trace_recorded(&World::new(scene, objects.as_ref()).with_surface(&surface), &ray, settings))
 }

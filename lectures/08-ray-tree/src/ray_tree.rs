@@ -129,7 +129,7 @@ fn triple(v: Vec3) -> String {
 /// may cost more intersection tests. Book: §8.5 Seeing the ray tree.
 pub fn trace_recorded(world: &World, ray: &Ray, settings: &TraceSettings) -> (Color, RayTree) {
     let recorder = Recorder::new(world.objects);
-    let recording = World { scene: world.scene, objects: &recorder };
+    let recording = World { objects: &recorder, ..*world };
     let color = trace_node(&recording, ray, RayKind::Eye, 0, 1.0, settings, Some(&recorder));
     (color, recorder.into_tree())
 }

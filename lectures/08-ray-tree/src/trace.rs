@@ -29,7 +29,9 @@ use crate::world::World;
 ///
 /// or the scene's background when nothing is hit. I_local is lecture 06's
 /// shading with shadow rays, or lecture 05's without them when
-/// `settings.shadows` is off. Every ray looks in (0, ∞); `ray.dir` need not
+/// `settings.shadows` is off, both with the surface's diffuse colour k_d
+/// from [`World::diffuse`] (the material's own, or its texture's there when
+/// the world has a surface colour). Every ray looks in (0, ∞); `ray.dir` need not
 /// be unit (it is normalised for the shading and the children, whose
 /// directions are unit).
 ///
@@ -113,9 +115,11 @@ fn trace_ray(
     let material = &scene.materials[hit.material];
     let dir = ray.dir.normalize();
 
-    // Local shading: with shadow rays (06), or every light unblocked (05).
+    // Local shading with the surface's colour there (a texture's, lecture 10): with shadow
+    // rays (06), or every light unblocked (05).
+    let diffuse = world.diffuse(&hit, material);
     let mut color = if settings.shadows {
-        let surface = Surface { material, diffuse: material.diffuse, hit, v: -dir, origin: ray.origin };
+        let surface = Surface { material, diffuse, hit, v: -dir, origin: ray.origin };
         shade_with_shadows(
             world.objects,
             &scene.materials,
@@ -125,7 +129,7 @@ fn trace_ray(
             ShadowSettings { mode: settings.shadow_mode, area_samples: settings.area_samples },
         )
     } else {
-        shade_local(material, material.diffuse, &hit, -dir, &scene.lights, scene.ambient)
+        shade_local(material, diffuse, &hit, -dir, &scene.lights, scene.ambient)
     };
 
     // The depth limit: the deepest rays spawn nothing.

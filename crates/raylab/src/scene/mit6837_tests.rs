@@ -7,6 +7,7 @@ use std::path::PathBuf;
 use super::*;
 use crate::data::shared_data;
 use crate::math::consts::{FRAC_PI_6, PI};
+use crate::scene::Texture;
 
 /// Conversions degrees → radians, normalisations and products of a few
 /// matrices are a few roundings off the exact value (values of size ≤ 12).
@@ -318,8 +319,8 @@ fn camera_and_file_errors() {
         @"scenes/a.txt:2:1: a second Camera block (the first is at 1:1)");
     insta::assert_snapshot!(error("Camera { }"),
         @"scenes/a.txt:1:1: unexpected `Camera`, expected OrthographicCamera, PerspectiveCamera, Lights, Background, Materials or Group");
-    insta::assert_snapshot!(error(&format!("{CAMERA}Materials {{\n    numMaterials 1\n    Checkerboard {{ }}\n}}\n")),
-        @"scenes/a.txt:4:5: `Checkerboard` (procedural texture of 6.837 assignment 6) is not supported yet");
+    insta::assert_snapshot!(error(&format!("{CAMERA}Materials {{\n    numMaterials 1\n    Marble {{ }}\n}}\n")),
+        @"scenes/a.txt:4:5: `Marble` (procedural texture of 6.837 assignment 6) is not supported yet");
 }
 
 #[test]
@@ -443,4 +444,68 @@ fn a_file_without_lights_shows_flat_diffuse_colour_through_a_white_ambient_light
     assert_eq!(lit.ambient, BLACK);
     let dim = parse(&format!("{camera} Background {{ ambientLight 0.2 0.2 0.2 }} {group}")).unwrap();
     assert_eq!(dim.ambient, Color::splat(0.2));
+}
+
+/// `CAMERA`, then materials 0 (red) and 1 (`second`, lines 4 and 5) and `checkerboard` on line 6.
+fn checkerboard_scene(second: &str, checkerboard: &str) -> String {
+    format!(
+        "{CAMERA}Materials {{\n    numMaterials 3\n    PhongMaterial {{ diffuseColor 1 0 0 specularColor 1 1 1 \
+         exponent 64 }}\n    {second}\n    {checkerboard}\n}}\n\
+         Group {{ numObjects 1 MaterialIndex 2 Sphere {{ center 0 0 0 radius 1 }} }}\n"
+    )
+}
+
+const BLUE: &str = "PhongMaterial { diffuseColor 0 0 1 specularColor 1 1 1 exponent 64 }";
+
+#[test]
+fn a_checkerboard_is_a_solid_checker_between_two_diffuse_colours() {
+    // The steps compose left to right, M = UniformScale 2 · Translate (0, 1, 0): p′ = 2(p + ŷ).
+    // The material is material 0's (red, white highlight, exponent 64) with the blue of 1.
+    let text = checkerboard_scene(
+        BLUE,
+        "Checkerboard { Transform { UniformScale 2 Translate 0 1 0 } materialIndex 0 materialIndex 1 }",
+    );
+    let scene = parse(&text).unwrap_or_else(|e| panic!("{e}"));
+    let m = &scene.materials[2];
+    let pattern_from_world = Mat4::from_scale(Vec3::splat(2.0)) * Mat4::from_translation(Vec3::Y);
+    let blue = Color::new(0.0, 0.0, 1.0);
+    assert_eq!(m.texture, Some(Texture::SolidChecker { pattern_from_world, other: blue }));
+    assert_eq!((m.diffuse, m.specular, m.exponent), (Color::new(1.0, 0.0, 0.0), WHITE, 64.0));
+    assert_eq!(scene.objects[0].material, 2);
+}
+
+#[test]
+fn checkerboard_errors() {
+    // Columns counted in `    Checkerboard { Transform { … } materialIndex a materialIndex b }`.
+    let error_of = |second: &str, checkerboard: &str| error(&checkerboard_scene(second, checkerboard));
+    insta::assert_snapshot!(error_of("PhongMaterial { diffuseColor 0 0 1 }",
+        "Checkerboard { Transform { } materialIndex 0 materialIndex 1 }"),
+        @"scenes/a.txt:6:5: a Checkerboard of materials 0 and 1 that differ in more than diffuseColor is not supported yet");
+    insta::assert_snapshot!(error_of(BLUE, "Checkerboard { Transform { } materialIndex 0 materialIndex 7 }"),
+        @"scenes/a.txt:6:64: material index 7 is out of range: 2 materials are defined before it");
+    insta::assert_snapshot!(error_of(BLUE, "Checkerboard { materialIndex 0 materialIndex 1 }"),
+        @"scenes/a.txt:6:20: expected `Transform`, found `materialIndex`");
+    insta::assert_snapshot!(error_of(BLUE, "Checkerboard { Transform { Sphere } materialIndex 0 materialIndex 1 }"),
+        @"scenes/a.txt:6:32: expected a transformation or `}` in the Checkerboard's Transform, found `Sphere`");
+}
+
+#[test]
+fn the_course_checkerboard_scenes_load() {
+    // scene6_13: a red/blue checkerboard (UniformScale 2) on the sphere, material 2, and a
+    // green/yellow one (UniformScale 0.75) on the floor, material 5. scene7_02: red/blue at
+    // UniformScale 10 on two triangles.
+    let solid = |scale: Float, other: Color| {
+        Some(Texture::SolidChecker { pattern_from_world: Mat4::from_scale(Vec3::splat(scale)), other })
+    };
+    if let Some(scene) = load_shared("scene6_13_checkerboard.txt") {
+        assert_usable(&scene, "scene6_13");
+        assert_eq!(scene.materials[2].texture, solid(2.0, Color::new(0.0, 0.0, 1.0)));
+        assert_eq!(scene.materials[5].texture, solid(0.75, Color::new(1.0, 1.0, 0.0)));
+        assert_eq!((scene.objects[0].material, scene.objects[1].material), (2, 5));
+    }
+    if let Some(scene) = load_shared("scene7_02_checkerboard.txt") {
+        assert_usable(&scene, "scene7_02");
+        assert_eq!(scene.materials[2].texture, solid(10.0, Color::new(0.0, 0.0, 1.0)));
+        assert_eq!(scene.materials[2].diffuse, Color::new(1.0, 0.0, 0.0));
+    }
 }

@@ -17,10 +17,11 @@ mod toml_spec;
 mod topology;
 mod torus;
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 use crate::color::Color;
+use crate::image::Image;
 use crate::math::{Float, Mat4, Vec3};
 
 pub use error::SceneError;
@@ -156,6 +157,28 @@ pub struct Material {
     pub transparent: Color,
     /// The index of refraction η of the material (the outside is vacuum, η = 1).
     pub ior: Float,
+    /// A texture that varies k_d over the surface (`None`: k_d everywhere).
+    pub texture: Option<Texture>,
+}
+
+/// A texture: what varies a material's diffuse colour k_d (and ambient kₐ)
+/// over its surface. The description is data; lecture 10 evaluates it, and
+/// lecture 08's tracer asks for the colour at each hit.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Texture {
+    /// A checkerboard in the surface's texture coordinates (u, v): `scale`
+    /// cells per unit of u and of v, the cell (0, 0) and every other one of
+    /// the material's `diffuse` colour, the rest `other`.
+    Checker { scale: Float, other: Color },
+    /// A solid checkerboard of unit cubes in pattern space, p′ =
+    /// `pattern_from_world`·p (p the hit point in world space): the cube
+    /// (0, 0, 0) and every other one of the material's `diffuse`, the rest
+    /// `other`. 6.837's `Checkerboard` material.
+    SolidChecker { pattern_from_world: Mat4, other: Color },
+    /// An image of linear colours, read when the scene is loaded, looked up
+    /// at the hit's (u, v) with bilinear filtering and wrapping; `file` is
+    /// where it was read from.
+    Image { file: PathBuf, image: Arc<Image> },
 }
 
 impl Default for Material {
@@ -169,6 +192,7 @@ impl Default for Material {
             reflective: Color::ZERO,
             transparent: Color::ZERO,
             ior: 1.0,
+            texture: None,
         }
     }
 }

@@ -16,13 +16,14 @@ use toml::Spanned;
 use super::checks::{self, show};
 use super::toml_spec::{
     CameraSpec, LightSpec, MaterialSpec, Num, Nums, ObjectSpec, RenderSpec, SHAPES, ScaleSpec, SceneSpec,
-    StepSpec, shape_keys,
+    StepSpec, TextureSpec, shape_keys,
 };
 use super::{
     Camera, Light, LightKind, Material, Mesh, Object, RenderSettings, Scene, SceneError, Shape, Specular,
-    Transform,
+    Texture, Transform,
 };
 use crate::color::{BLACK, Color, WHITE};
+use crate::image::Image;
 use crate::math::{Float, Mat4, Vec3, radians};
 
 /// Reads the TOML scene file at `path` (format: `crates/raylab/SCENES.md`).
@@ -375,10 +376,52 @@ impl Reader<'_> {
                 reflective: self.color(&m.reflective, "reflective", BLACK)?,
                 transparent: self.color(&m.transparent, "transparent", BLACK)?,
                 ior,
+                texture: m.texture.as_ref().map(|t| self.texture(t)).transpose()?,
                 name,
             });
         }
         Ok(materials)
+    }
+
+    /// A material's `texture`: a uv checkerboard, a solid one, or an image
+    /// file (relative to the scene file's folder, read now).
+    fn texture(&self, spec: &Spanned<TextureSpec>) -> Result<Texture, SceneError> {
+        let (whole, t) = (spec.span(), spec.get_ref());
+        let kind = t.kind.get_ref().as_str();
+        let allowed: &[&str] = match kind {
+            "checker" | "solid_checker" => &["scale", "other"],
+            "image" => &["file"],
+            _ => {
+                return Err(self.error(
+                    &t.kind.span(),
+                    format!("unknown texture type `{kind}`, expected checker, solid_checker or image"),
+                ));
+            }
+        };
+        let present =
+            [("scale", span_of(&t.scale)), ("other", span_of(&t.other)), ("file", span_of(&t.file))];
+        let what = format!("the {kind} texture");
+        self.only(&what, &present, allowed)?;
+        if kind == "image" {
+            let file = self.need(&t.file, "file", &what, &whole)?;
+            let path = self.dir.join(file.get_ref());
+            let image = Image::load_png(&path)
+                .map_err(|e| self.error(&file.span(), format!("image file `{}`: {e}", file.get_ref())))?;
+            return Ok(Texture::Image { file: path, image: Arc::new(image) });
+        }
+        let scale = match &t.scale {
+            None => 1.0,
+            Some(n) => match self.float(n, "scale")? {
+                x if x > 0.0 => x,
+                x => return Err(self.error(&n.span(), format!("scale must be > 0, found {x}"))),
+            },
+        };
+        let other = self.color(&t.other, "other", BLACK)?;
+        Ok(if kind == "checker" {
+            Texture::Checker { scale, other }
+        } else {
+            Texture::SolidChecker { pattern_from_world: Mat4::from_scale(Vec3::splat(scale)), other }
+        })
     }
 
     fn object(

@@ -92,6 +92,18 @@ pub struct MaterialSpec {
     pub reflective: Option<Nums>,
     pub transparent: Option<Nums>,
     pub ior: Option<Num>,
+    pub texture: Option<Spanned<TextureSpec>>,
+}
+
+/// A material's `texture = { type = …, … }`; which keys it takes depends on its `type`.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct TextureSpec {
+    #[serde(rename = "type")]
+    pub kind: Spanned<String>,
+    pub scale: Option<Num>,
+    pub other: Option<Nums>,
+    pub file: Option<Spanned<String>>,
 }
 
 /// One `[[objects]]` table; which shape keys it takes depends on its `type`

@@ -484,3 +484,59 @@ fn the_example_in_scenes_md_loads() {
     };
     assert_eq!(scene.render, render);
 }
+
+#[test]
+fn textures_load_with_their_defaults() {
+    // scale defaults to 1 and other to black; a solid checker of scale s maps p to s·p.
+    let text = format!(
+        "{CAMERA}[materials.a]\ntexture = {{ type = \"checker\", scale = 4, other = [1, 0, 0] }}\n\
+         [materials.b]\ntexture = {{ type = \"solid_checker\" }}\n\
+         [materials.c]\ntexture = {{ type = \"solid_checker\", scale = 2 }}\n[materials.d]\n"
+    );
+    let scene = parse(&text).unwrap_or_else(|e| panic!("{e}"));
+    let red = Color::new(1.0, 0.0, 0.0);
+    assert_eq!(scene.materials[0].texture, Some(Texture::Checker { scale: 4.0, other: red }));
+    let solid = |pattern_from_world| Some(Texture::SolidChecker { pattern_from_world, other: BLACK });
+    assert_eq!(scene.materials[1].texture, solid(Mat4::IDENTITY));
+    assert_eq!(scene.materials[2].texture, solid(Mat4::from_scale(Vec3::splat(2.0))));
+    assert_eq!(scene.materials[3].texture, None);
+}
+
+#[test]
+fn image_textures_are_read_beside_the_scene_file() {
+    // A 2 × 1 PNG written next to the scene: black and red, which survive the 8-bit sRGB round
+    // trip exactly (0 and 1 are fixed points of the transfer curve).
+    let dir = temp_dir("toml-texture");
+    let mut image = Image::new(2, 1);
+    image.set(1, 0, Color::new(1.0, 0.0, 0.0));
+    image.save_png(dir.join("tex.png")).unwrap();
+    let text = format!("{CAMERA}[materials.a]\ntexture = {{ type = \"image\", file = \"tex.png\" }}\n");
+    std::fs::write(dir.join("s.toml"), text).unwrap();
+    let scene = load_toml(&dir.join("s.toml")).unwrap_or_else(|e| panic!("{e}"));
+    let Some(Texture::Image { file, image: read }) = &scene.materials[0].texture else {
+        panic!("expected an image texture, found {:?}", scene.materials[0].texture)
+    };
+    assert_eq!((file, read.as_ref()), (&dir.join("tex.png"), &image));
+}
+
+#[test]
+fn texture_errors() {
+    // Line 7 is the texture's; columns counted in `texture = { type = "…", … }` (the table opens
+    // at column 11, the type's value at 20).
+    let texture = |t: &str| error(&format!("{CAMERA}[materials.m]\ntexture = {{ {t} }}\n"));
+    insta::assert_snapshot!(texture("type = \"wood\""),
+        @"scenes/a.toml:7:20: unknown texture type `wood`, expected checker, solid_checker or image");
+    insta::assert_snapshot!(texture("type = \"image\""),
+        @"scenes/a.toml:7:11: the image texture needs `file`");
+    insta::assert_snapshot!(texture("type = \"checker\", file = \"a.png\""),
+        @"scenes/a.toml:7:38: file is not a key of the checker texture (its keys: scale, other)");
+    insta::assert_snapshot!(texture("type = \"checker\", scale = 0"),
+        @"scenes/a.toml:7:39: scale must be > 0, found 0");
+    insta::assert_snapshot!(texture("type = \"checker\", other = [1, -1, 0]"),
+        @"scenes/a.toml:7:39: other components must be ≥ 0, found [1, -1, 0]");
+    let missing = texture("type = \"image\", file = \"missing.png\"");
+    assert!(
+        missing.starts_with("scenes/a.toml:7:36: image file `missing.png`: scenes/missing.png"),
+        "{missing}"
+    );
+}
