@@ -3,8 +3,10 @@
 //! `cargo run -p grader` renders every lecture's scenes with the reference
 //! (or the student's) code and compares them with the lecture's snapshots;
 //! `grader render SCENE -o OUT.png` renders any TOML or MIT 6.837 scene;
-//! `grader bless` regenerates the snapshots from the reference.
+//! `grader bless` regenerates the snapshots from the reference;
+//! `grader bench-rays MESH.obj` measures lecture 09's BVH in Mrays/s.
 
+mod bench;
 mod lectures;
 mod shade;
 
@@ -37,6 +39,8 @@ enum Command {
         /// Only this lecture (e.g. 02).
         lecture: Option<String>,
     },
+    /// Primary-ray throughput of lecture 09's BVH on a mesh (run with --release).
+    BenchRays(bench::BenchArgs),
 }
 
 #[derive(clap::Args)]
@@ -132,6 +136,7 @@ fn main() -> ExitCode {
         Command::Render(args) => render(&args),
         Command::Check { lecture } => lectures::check(lecture.as_deref()),
         Command::Bless { lecture } => lectures::bless(lecture.as_deref()),
+        Command::BenchRays(args) => bench::bench_rays(&args).map(|()| ExitCode::SUCCESS),
     };
     match result {
         Ok(code) => code,

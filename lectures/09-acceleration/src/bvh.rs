@@ -31,7 +31,12 @@ const _: () = assert!(SAH_DEPTH + 32 <= MAX_DEPTH);
 /// A leaf (`count > 0`) holds the `count` primitives `offset..offset +
 /// count` of [`Bvh::primitives`]; an inner node has `count == 0` and was split
 /// along `axis` (0, 1, 2), its first child holding the smaller centroids.
-/// Book: §9.5 A flat array of nodes.
+///
+/// Compact: 32 bytes in f32 (the box's six floats, the offset, the count,
+/// the axis, one byte of padding), so two nodes share a 64-byte cache line
+/// and the traversal, which reads a node for each box test, moves as little
+/// memory as it can; the first child, next in the array, often arrives with
+/// its parent. Book: §9.5 A flat array of nodes.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Node {
     /// The box around everything beneath the node.
@@ -43,6 +48,9 @@ pub struct Node {
     /// The axis an inner node was split along.
     pub axis: u8,
 }
+
+// The node layout above, checked when compiling: 32 bytes in f32 (56 in f64).
+const _: () = assert!(size_of::<Node>() == 6 * size_of::<Float>() + 8);
 
 impl Node {
     pub fn is_leaf(&self) -> bool {

@@ -3,11 +3,11 @@
 //! rather than tested all at once. Glue, not an exercise: each case calls the
 //! routine of lectures 03–04 that owns it.
 
-use l03_polygons_triangles::hit_triangle;
+use l03_polygons_triangles::{hit_triangle, hit_triangle_watertight};
 use l04_quadrics_transforms::hit_object;
 use raylab::scene::{Mesh, Object, Shape};
 use raylab::stats::{Counter, count};
-use raylab::{Hit, Interval, Ray};
+use raylab::{Float, Hit, Interval, Ray};
 
 /// A primitive of the BVH: `object` indexes the scene's objects; `triangle`
 /// indexes the triangles of that object's mesh, or is [`Primitive::WHOLE`]
@@ -47,17 +47,46 @@ impl Primitive {
     /// The primitive must come from a BVH built over `objects`.
     pub fn hit(self, objects: &[Object], ray: &Ray, range: Interval) -> Option<Hit> {
         let index = self.object as usize;
+        if self.triangle == Self::WHOLE {
+            let hit = hit_object(&objects[index], ray, range)?;
+            return Some(Hit { object: index, material: objects[index].material, ..hit });
+        }
+        count(Counter::IntersectionTests);
+        self.mesh_triangle_hit(objects, ray, range)
+    }
+
+    /// For a mesh triangle: the t of its hit, `Some` exactly when [`Primitive::hit`]
+    /// finds one and with the same t, but without building the [`Hit`] (the
+    /// point, the normals, uv): among the triangles a ray meets only the
+    /// closest needs its hit record, which [`Primitive::mesh_triangle_hit`]
+    /// then builds once. Counted as one intersection test. `None` for a whole
+    /// object. Book: §9.7 Ordered traversal.
+    pub fn triangle_t(self, objects: &[Object], ray: &Ray, range: Interval) -> Option<Float> {
+        let Shape::Mesh(mesh) = &objects[self.object as usize].shape else {
+            return None;
+        };
+        if self.triangle == Self::WHOLE {
+            return None;
+        }
+        count(Counter::IntersectionTests);
+        let [a, b, c] = mesh.triangle(self.triangle as usize);
+        let found = hit_triangle_watertight(ray, a, b, c, range)?;
+        // No hit where 03's hit_triangle would find no face normal.
+        (b - a).cross(c - a).try_normalize()?;
+        Some(found.t)
+    }
+
+    /// The whole hit of a mesh-triangle primitive, as [`Primitive::hit`] gives
+    /// it, not counted as a test (the traversal counted it when it asked
+    /// [`Primitive::triangle_t`]).
+    pub fn mesh_triangle_hit(self, objects: &[Object], ray: &Ray, range: Interval) -> Option<Hit> {
+        let index = self.object as usize;
         let object = &objects[index];
-        let hit = if self.triangle == Self::WHOLE {
-            hit_object(object, ray, range)
-        } else {
-            let Shape::Mesh(mesh) = &object.shape else {
-                debug_assert!(false, "primitive {self:?} names a triangle of a {}", object.shape.kind());
-                return None;
-            };
-            count(Counter::IntersectionTests);
-            hit_mesh_triangle(mesh, self.triangle as usize, ray, range)
-        }?;
+        let Shape::Mesh(mesh) = &object.shape else {
+            debug_assert!(false, "primitive {self:?} names a triangle of a {}", object.shape.kind());
+            return None;
+        };
+        let hit = hit_mesh_triangle(mesh, self.triangle as usize, ray, range)?;
         Some(Hit { object: index, material: object.material, ..hit })
     }
 }
@@ -109,6 +138,47 @@ mod tests {
             hits += best.is_some() as usize;
         }
         assert!(hits > 300, "only {hits} of 500 rays hit the torus");
+    }
+
+    #[test]
+    fn triangle_t_is_the_hits_t_without_the_record() {
+        // Every triangle of a torus (normals, uvs) on 200 rays, and a triangle whose
+        // face normal overflows (corners near Float::MAX: (b − a)×(c − a) is ∞, so 03's
+        // hit_triangle gives no hit): triangle_t is Some exactly when hit is, same t bits.
+        let big = Float::MAX / 4.0;
+        let huge = Mesh {
+            positions: vec![Vec3::new(-big, -big, 0.0), Vec3::new(big, -big, 0.0), Vec3::new(0.0, big, 0.0)],
+            triangles: vec![[0, 1, 2]],
+            ..Mesh::default()
+        };
+        let torus = Mesh::torus(1.0, 0.3, 12, 8);
+        let vertices = torus.positions.clone();
+        let objects = [
+            crate::test_support::object(Shape::Mesh(std::sync::Arc::new(torus)), 2, None),
+            crate::test_support::object(Shape::Mesh(std::sync::Arc::new(huge)), 0, None),
+        ];
+        let mut rng = crate::test_support::Rng::new(5);
+        let mut hits = 0;
+        for _ in 0..200 {
+            // From anywhere near, aimed at a random vertex, give or take.
+            let (origin, vertex) = (rng.in_cube(2.0), rng.below(vertices.len() as u64) as usize);
+            let ray = Ray::new(origin, vertices[vertex] + rng.in_cube(0.1) - origin);
+            for t in 0..192 {
+                let p = Primitive { object: 0, triangle: t };
+                let (full, only_t) = (
+                    p.hit(&objects, &ray, Interval::POSITIVE),
+                    p.triangle_t(&objects, &ray, Interval::POSITIVE),
+                );
+                assert_eq!(full.map(|h| h.t), only_t, "{ray:?} triangle {t}");
+                hits += full.is_some() as usize;
+            }
+        }
+        assert!(hits > 200, "only {hits} triangle hits");
+        let down = Ray::new(Vec3::new(0.0, 0.0, 1.0), -Vec3::Z);
+        let p = Primitive { object: 1, triangle: 0 };
+        assert_eq!(p.hit(&objects, &down, Interval::POSITIVE), None);
+        assert_eq!(p.triangle_t(&objects, &down, Interval::POSITIVE), None);
+        assert_eq!(Primitive::whole(0).triangle_t(&objects, &down, Interval::POSITIVE), None);
     }
 
     #[test]
