@@ -5,6 +5,8 @@
 
 use raylab::{Float, Hit, Interval, Ray, Vec3};
 
+use crate::capped::{first_crossing, slab_z_span};
+
 /// The first crossing of `ray` with the canonical capped cylinder
 /// x² + y² ≤ 1, 0 ≤ z ≤ 1 (radius 1, axis along +z, caps at z = 0 and z = 1).
 ///
@@ -60,32 +62,10 @@ pub fn hit_cylinder(ray: &Ray, range: Interval) -> Option<Hit> {
     };
 
     // The caps: the span inside the slab 0 ≤ z ≤ 1.
-    let (cap_in, cap_out) = if d.z == 0.0 {
-        if !(0.0..=1.0).contains(&o.z) {
-            return None;
-        }
-        (Float::NEG_INFINITY, Float::INFINITY)
-    } else {
-        let t0 = -o.z / d.z;
-        let t1 = (1.0 - o.z) / d.z;
-        (t0.min(t1), t0.max(t1))
-    };
+    let caps = slab_z_span(o.z, d.z)?;
 
-    // The solid: enter at the later entry, leave at the earlier exit.
-    let t_in = side_in.max(cap_in);
-    let t_out = side_out.min(cap_out);
-    if t_in > t_out {
-        return None;
-    }
-
-    // The first crossing inside the range, and the surface that made it.
-    let (t, on_cap) = if range.contains(t_in) {
-        (t_in, cap_in > side_in)
-    } else if range.contains(t_out) {
-        (t_out, cap_out < side_out)
-    } else {
-        return None;
-    };
+    // The solid's first crossing inside the range, and whether a cap made it.
+    let (t, on_cap) = first_crossing((side_in, side_out), caps, range)?;
     let p = ray.at(t);
     let outward = if on_cap {
         Vec3::new(0.0, 0.0, if p.z > 0.5 { 1.0 } else { -1.0 })

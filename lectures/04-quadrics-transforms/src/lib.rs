@@ -13,6 +13,7 @@
 // The tests widen `Float` to f64 for their references: the identity in an f64 build.
 #![cfg_attr(test, allow(clippy::unnecessary_cast))]
 
+mod capped;
 mod cone;
 mod cylinder;
 mod parametric;
@@ -24,6 +25,7 @@ mod transformed;
 #[cfg(test)]
 mod test_support;
 
+pub use capped::{first_crossing, slab_z_span};
 pub use cone::hit_cone;
 pub use cylinder::hit_cylinder;
 pub use parametric::parametric_normal;
