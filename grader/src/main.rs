@@ -16,7 +16,10 @@ use std::process::ExitCode;
 use clap::{Parser, Subcommand, ValueEnum};
 use l06_shadows::ShadowMode;
 use l08_ray_tree::TraceSettings;
+use l10_textures_sampling::{Filter, Pattern};
 use raylab::{Float, Scene};
+
+use crate::shade::Sampling;
 
 #[derive(Parser)]
 #[command(name = "grader", about = "The raylab workbench: render scenes, compare with snapshots, bless.")]
@@ -73,6 +76,15 @@ struct RenderArgs {
     /// `area_samples`, else 16].
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..=4096))]
     samples: Option<u32>,
+    /// Eye rays per pixel, 1 to 1024 [default: the scene's `spp`, else 1].
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1024))]
+    spp: Option<u32>,
+    /// Where a pixel's eye rays go [default: jittered with more than one, else the centre].
+    #[arg(long, value_enum)]
+    pattern: Option<PatternArg>,
+    /// How a pixel weighs its eye rays [default: box].
+    #[arg(long, value_enum)]
+    filter: Option<FilterArg>,
     /// Trace no shadow rays.
     #[arg(long)]
     no_shadows: bool,
@@ -101,6 +113,40 @@ impl RenderArgs {
             fresnel: self.fresnel,
         }
     }
+
+    /// The scene's sampling ([`shade::scene_sampling`]), overridden by the flags given.
+    fn sampling(&self, scene: &Scene) -> Sampling {
+        let own = shade::scene_sampling(scene);
+        let spp = self.spp.unwrap_or(own.spp);
+        let pattern = match self.pattern {
+            Some(PatternArg::Regular) => Pattern::Regular,
+            Some(PatternArg::Jittered) => Pattern::Jittered,
+            Some(PatternArg::Stratified) => Pattern::Stratified,
+            None if spp > 1 => Pattern::Jittered,
+            None => Pattern::Regular,
+        };
+        let filter = match self.filter {
+            Some(FilterArg::Box) => Filter::Box,
+            Some(FilterArg::Tent) => Filter::Tent,
+            None => own.filter,
+        };
+        Sampling { spp, pattern, filter }
+    }
+}
+
+/// Sample patterns (lecture 10).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+enum PatternArg {
+    Regular,
+    Jittered,
+    Stratified,
+}
+
+/// Pixel filters (lecture 10).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+enum FilterArg {
+    Box,
+    Tent,
 }
 
 /// Arbitrary output variables.
@@ -161,7 +207,7 @@ fn render(args: &RenderArgs) -> Result<ExitCode, String> {
             pixel.0, pixel.1, color.x, color.y, color.z
         );
     }
-    let (image, stats) = shade::render_scene(&scene, args.aov, &settings)?;
+    let (image, stats) = shade::render_scene(&scene, args.aov, &settings, args.sampling(&scene))?;
     let write = match args.aov {
         Some(Aov::Depth | Aov::Normal) => image.save_exr(&args.output),
         _ => image.save_png(&args.output),

@@ -6,7 +6,7 @@
 use l01_transforms::Camera;
 use l06_shadows::ShadowMode;
 use l08_ray_tree::{RayTree, TraceSettings, World, trace_recorded};
-use l10_textures_sampling::surface_color;
+use l10_textures_sampling::{Filter, Pattern, render_supersampled, surface_color};
 use raylab::scene::Material;
 use raylab::stats::{RayStats, measure};
 use raylab::{Color, Hit, Image, Scene};
@@ -30,11 +30,31 @@ pub fn scene_settings(scene: &Scene) -> TraceSettings {
     }
 }
 
+/// How many eye rays each pixel gets, where, and how they are weighted
+/// (lecture 10). One ray is the pixel centre, as lecture 08 renders.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Sampling {
+    pub spp: u32,
+    pub pattern: Pattern,
+    pub filter: Filter,
+}
+
+/// The sampling `scene` asks for: its `[render]` `spp` (default 1), jittered
+/// and box-filtered when there is more than one ray.
+pub fn scene_sampling(scene: &Scene) -> Sampling {
+    let spp = scene.render.samples_per_pixel.unwrap_or(1);
+    Sampling { spp, pattern: if spp > 1 { Pattern::Jittered } else { Pattern::Regular }, filter: Filter::Box }
+}
+
+/// The seed of every supersampled render: the same image on every run.
+const SAMPLING_SEED: u64 = 0x5eed;
+
 /// Renders `scene` at its size: the traced image, or the AOV asked for.
 pub fn render_scene(
     scene: &Scene,
     aov: Option<Aov>,
     settings: &TraceSettings,
+    sampling: Sampling,
 ) -> Result<(Image, RayStats), String> {
     let camera = Camera::from_scene(&scene.camera, scene.width, scene.height).map_err(|e| e.to_string())?;
     let objects = l09_acceleration::intersector_for(&scene.objects);
@@ -46,7 +66,13 @@ pub fn render_scene(
         Some(Aov::Normal) => measure(|| l02_ray_casting::normal_image(&camera, &objects, w, h)),
         None => {
             let surface = |hit: &Hit, material: &Material| surface_color(scene, hit, material);
-            l08_ray_tree::render(&World::new(scene, objects).with_surface(&surface), &camera, w, h, settings)
+            let world = World::new(scene, objects).with_surface(&surface);
+            if sampling.spp == 1 && sampling.pattern == Pattern::Regular {
+                l08_ray_tree::render(&world, &camera, w, h, settings)
+            } else {
+                let Sampling { spp, pattern, filter } = sampling;
+                render_supersampled(&world, &camera, w, h, settings, spp, pattern, filter, SAMPLING_SEED)
+            }
         }
     })
 }

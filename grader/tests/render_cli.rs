@@ -135,3 +135,39 @@ fn every_mit6837_scene_of_assignments_1_to_4_renders() {
     }
     assert_eq!(rendered, 49, "the 6.837 assignments 1–4 have 49 scene files");
 }
+
+#[test]
+fn supersampling_the_receding_checker_brings_it_closer_to_the_converged_image() {
+    // Lecture 10's aliasing scene at 1, 16 and 256 jittered rays per pixel: 256 stands in
+    // for the converged image; 16 must be nearer to it than 1 is (mean absolute error over
+    // all pixels and channels), which is the speed/accuracy trade of supersampling.
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
+    let scene = root.join("lectures/10-textures-sampling/scenes/checker-aliasing-1spp.toml");
+    let dir = temp_dir("spp");
+    let render = |spp: &str| {
+        let png = dir.join(format!("spp{spp}.png"));
+        let out = grader(&[
+            "render",
+            scene.to_str().unwrap(),
+            "--size",
+            "80x48",
+            "--spp",
+            spp,
+            "--pattern",
+            "jittered",
+            "-o",
+            png.to_str().unwrap(),
+        ]);
+        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+        Image::load_png(&png).unwrap()
+    };
+    let (one, sixteen, converged) = (render("1"), render("16"), render("256"));
+    let error = |image: &Image| {
+        let total: Float =
+            image.pixels.iter().zip(&converged.pixels).map(|(a, b)| (*a - *b).abs().element_sum()).sum();
+        total / (3 * image.pixels.len()) as Float
+    };
+    let (e1, e16) = (error(&one), error(&sixteen));
+    eprintln!("mean absolute error against 256 spp: 1 spp {e1:.4}, 16 spp {e16:.4}");
+    assert!(e16 < 0.5 * e1, "16 spp ({e16}) should at least halve the error of 1 spp ({e1})");
+}

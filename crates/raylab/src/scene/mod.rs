@@ -69,6 +69,8 @@ pub struct RenderSettings {
     pub transparent_shadows: Option<bool>,
     /// `area_samples`: shadow rays per area light and shading point, 1..=4096.
     pub area_samples: Option<u32>,
+    /// `spp`: eye rays per pixel (supersampling, lecture 10), 1..=1024.
+    pub samples_per_pixel: Option<u32>,
 }
 
 /// The camera as the scene file describes it. Lecture 01 turns it into a ray

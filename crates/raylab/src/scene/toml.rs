@@ -331,7 +331,20 @@ impl Reader<'_> {
                 }
             },
         };
-        Ok(RenderSettings { max_depth, min_weight, transparent_shadows: r.transparent_shadows, area_samples })
+        let samples_per_pixel = match &r.spp {
+            None => None,
+            Some(a) => match *a.get_ref() {
+                n @ 1..=1024 => Some(n as u32),
+                n => return Err(self.error(&a.span(), format!("spp must be in 1..=1024, found {n}"))),
+            },
+        };
+        Ok(RenderSettings {
+            max_depth,
+            min_weight,
+            transparent_shadows: r.transparent_shadows,
+            area_samples,
+            samples_per_pixel,
+        })
     }
 
     /// The named materials, in the order of the file.

@@ -36,6 +36,7 @@ pub struct RenderSpec {
     pub weight: Option<Num>,
     pub transparent_shadows: Option<bool>,
     pub area_samples: Option<Spanned<i64>>,
+    pub spp: Option<Spanned<i64>>,
 }
 
 /// `[image]`

@@ -45,6 +45,7 @@ depth = 7
 weight = 0.25
 transparent_shadows = true
 area_samples = 64
+spp = 9
 
 [camera]
 type = "perspective"
@@ -176,6 +177,7 @@ fn full_example_loads_to_the_values_written() {
         min_weight: Some(0.25),
         transparent_shadows: Some(true),
         area_samples: Some(64),
+        samples_per_pixel: Some(9),
     };
     assert_eq!(scene.render, render);
 
@@ -436,10 +438,15 @@ fn render_table_and_area_light_errors() {
         @"scenes/a.toml:7:16: area_samples must be in 1..=4096, found 0");
     insta::assert_snapshot!(render("area_samples = 4097\n"),
         @"scenes/a.toml:7:16: area_samples must be in 1..=4096, found 4097");
+    // `spp = ` is 6 characters: the value starts in column 7.
+    insta::assert_snapshot!(render("spp = 0\n"),
+        @"scenes/a.toml:7:7: spp must be in 1..=1024, found 0");
+    insta::assert_snapshot!(render("spp = 1025\n"),
+        @"scenes/a.toml:7:7: spp must be in 1..=1024, found 1025");
     insta::assert_snapshot!(render("transparent_shadows = 1\n"),
         @"scenes/a.toml:7:23: invalid type: integer `1`, expected a boolean");
     insta::assert_snapshot!(render("samples = 4\n"),
-        @"scenes/a.toml:7:1: unknown field `samples`, expected one of `depth`, `weight`, `transparent_shadows`, `area_samples`");
+        @"scenes/a.toml:7:1: unknown field `samples`, expected one of `depth`, `weight`, `transparent_shadows`, `area_samples`, `spp`");
     let light = |body: &str| error(&format!("{CAMERA}[[lights]]\n{body}"));
     insta::assert_snapshot!(light("type = \"rect\"\ncorner = [0, 1, 0]\nedge_u = [1, 0, 0]\nedge_v = [-2, 0, 0]\n"),
         @"scenes/a.toml:10:10: a rect light's edges must not be parallel, found edge_u [1, 0, 0] and edge_v [-2, 0, 0]");
@@ -481,6 +488,7 @@ fn the_example_in_scenes_md_loads() {
         min_weight: Some(0.01),
         transparent_shadows: Some(false),
         area_samples: Some(16),
+        samples_per_pixel: Some(1),
     };
     assert_eq!(scene.render, render);
 }
