@@ -17,7 +17,7 @@ mod sphere;
 #[cfg(test)]
 mod testing;
 
-pub use group::{Group, closest_hit, hit_sphere_or_plane};
+pub use group::{Group, closest_hit, hit_shape, hit_sphere_or_plane};
 pub use images::{depth_image, id_color, normal_image, object_id_image};
 pub use plane::hit_plane;
 pub use sphere::{hit_sphere_algebraic, hit_sphere_geometric, hit_sphere_stable};

@@ -23,7 +23,7 @@ mod testing;
 mod triangle;
 
 pub use mesh::hit_mesh;
-pub use object::hit_flat_shape;
+pub use object::{hit_flat_shape, hit_shape};
 pub use polygon::{dominant_axis, hit_polygon, inside_crossings, newell_normal, winding_number};
 pub use slabs::{hit_box, hit_slabs};
 pub use triangle::{

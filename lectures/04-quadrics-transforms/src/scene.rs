@@ -2,8 +2,7 @@
 //! brute-force [`Intersector`] the tracer uses until lecture 09's BVH.
 //! Glue, not exercises: each case calls the lecture routine that owns it.
 
-use l02_ray_casting::{closest_hit, hit_plane, hit_sphere_stable};
-use l03_polygons_triangles::{hit_box, hit_mesh, hit_polygon, hit_triangle};
+use l02_ray_casting::closest_hit;
 use raylab::scene::{Object, Shape};
 use raylab::stats::{Counter, count};
 use raylab::{Hit, Intersector, Interval, Ray};
@@ -11,36 +10,15 @@ use raylab::{Hit, Intersector, Interval, Ray};
 use crate::{hit_cone, hit_cylinder, hit_transformed};
 
 /// The hit of `ray` with `shape` (in the shape's own coordinates) inside
-/// `range`: spheres by 02's [`hit_sphere_stable`], planes by [`hit_plane`],
-/// boxes, polygons, triangles and meshes by 03's routines, cylinders and
-/// cones by this lecture's canonical ones.
+/// `range`: cylinders and cones by this lecture's canonical ones, every
+/// earlier shape through [`l03_polygons_triangles::hit_shape`] (boxes,
+/// polygons, triangles and meshes), which hands spheres and planes to
+/// [`l02_ray_casting::hit_shape`].
 ///
 /// Counts [`Counter::IntersectionTests`]: one per shape, one per triangle for a
-/// mesh (03's [`hit_mesh`] counts its triangles itself; every other shape is
-/// counted here). Book: §4.8 Every shape behind one door.
+/// mesh. Book: §4.8 Every shape behind one door.
 pub fn hit_shape(shape: &Shape, ray: &Ray, range: Interval) -> Option<Hit> {
     match shape {
-        Shape::Sphere { center, radius } => {
-            count(Counter::IntersectionTests);
-            hit_sphere_stable(ray, *center, *radius, range)
-        }
-        Shape::Plane { normal, offset } => {
-            count(Counter::IntersectionTests);
-            hit_plane(ray, *normal, *offset, range)
-        }
-        Shape::Box { min, max } => {
-            count(Counter::IntersectionTests);
-            hit_box(ray, *min, *max, range)
-        }
-        Shape::Polygon { vertices } => {
-            count(Counter::IntersectionTests);
-            hit_polygon(ray, vertices, range)
-        }
-        Shape::Triangle { vertices, normals } => {
-            count(Counter::IntersectionTests);
-            hit_triangle(ray, vertices, normals.as_ref(), range)
-        }
-        Shape::Mesh(mesh) => hit_mesh(ray, mesh, range),
         Shape::Cylinder => {
             count(Counter::IntersectionTests);
             hit_cylinder(ray, range)
@@ -49,6 +27,8 @@ pub fn hit_shape(shape: &Shape, ray: &Ray, range: Interval) -> Option<Hit> {
             count(Counter::IntersectionTests);
             hit_cone(ray, range)
         }
+        // Every earlier shape through lecture 03's door (which hands spheres and planes to 02's).
+        _ => l03_polygons_triangles::hit_shape(shape, ray, range),
     }
 }
 
