@@ -4,15 +4,42 @@
 # `cargo run -p grader -- bless` regenerates from the reference solutions.
 # A figure is named NN-SCENE.png (NN = the lecture = the chapter).
 # Run from anywhere: sh book/figures.sh
+#
+# sh book/figures.sh --check   changes nothing; fails (exit 1) naming every
+#   figure that differs from its snapshot (stale: run sh book/figures.sh),
+#   whose snapshot is missing, or that is in src/figures/ but not listed here.
+#   Byte-equal is the right test: a figure is a copy of its snapshot.
 set -eu
 root=$(cd "$(dirname "$0")/.." && pwd)
 out="$root/book/src/figures"
-mkdir -p "$out"
+check=false
+case "${1:-}" in
+    --check) check=true ;;
+    "") ;;
+    *) echo "usage: sh book/figures.sh [--check]" >&2; exit 2 ;;
+esac
+problems=0
+listed=""
 copy() { # lecture-folder scene...
     lecture=$1; shift
     n=$(echo "$lecture" | cut -c1-2)
     for scene in "$@"; do
-        cp "$root/lectures/$lecture/snapshots/$scene.png" "$out/$n-$scene.png"
+        src="$root/lectures/$lecture/snapshots/$scene.png"
+        dst="$out/$n-$scene.png"
+        listed="$listed $n-$scene.png"
+        if ! $check; then
+            mkdir -p "$out"
+            cp "$src" "$dst"
+        elif [ ! -f "$src" ]; then
+            echo "figures: no snapshot lectures/$lecture/snapshots/$scene.png for book/src/figures/$n-$scene.png"
+            problems=$((problems + 1))
+        elif [ ! -f "$dst" ]; then
+            echo "figures: missing book/src/figures/$n-$scene.png (copy of lectures/$lecture/snapshots/$scene.png)"
+            problems=$((problems + 1))
+        elif ! cmp -s "$src" "$dst"; then
+            echo "figures: stale book/src/figures/$n-$scene.png (differs from lectures/$lecture/snapshots/$scene.png)"
+            problems=$((problems + 1))
+        fi
     done
 }
 copy 01-transforms perspective orthographic rolled
@@ -24,4 +51,22 @@ copy 06-shadows sphere-shadow coloured-shadows far-from-origin soft-shadows-1 so
 copy 07-reflection-refraction mirror-floor reflective-sphere glass-spheres tir-slab
 copy 08-ray-tree whitted whitted-no-shadows facing-mirrors
 copy 09-acceleration many-spheres torus-65k
-echo "figures: $(ls "$out" | wc -l) files in $out"
+copy 10-textures-sampling checkerboard solid-checker checker-aliasing-1spp checker-aliasing-16spp
+if ! $check; then
+    echo "figures: $(ls "$out" | wc -l) files in $out"
+    exit 0
+fi
+# Figures that no line above makes (left behind by a renamed scene).
+for file in "$out"/*; do
+    [ -e "$file" ] || continue
+    name=$(basename "$file")
+    case " $listed " in
+        *" $name "*) ;;
+        *) echo "figures: book/src/figures/$name is not made by book/figures.sh"; problems=$((problems + 1)) ;;
+    esac
+done
+if [ "$problems" -gt 0 ]; then
+    echo "figures: $problems problem(s); regenerate with: sh book/figures.sh"
+    exit 1
+fi
+echo "figures: all $(echo $listed | wc -w) figures match their snapshots"

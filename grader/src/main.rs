@@ -1,286 +1,289 @@
 //! `grader`: the raylab workbench command.
 //!
-//! `cargo run -p grader` renders every lecture's scenes with the reference
-//! (or the student's) code and compares them with the lecture's snapshots;
-//! `grader render SCENE -o OUT.png` renders any TOML or MIT 6.837 scene;
-//! `grader bless` regenerates the snapshots from the reference;
-//! `grader bench-rays MESH.obj` measures lecture 09's BVH in Mrays/s.
+//! `cargo run -p grader` grades every lecture: it builds the checks
+//! (`grader/checks`) with the lectures that compile, runs each check in its
+//! own process with a time limit, and prints a table of verdicts and points
+//! (and writes `target/grader/report.html`). `grader 03` grades one lecture,
+//! `grader 03/hit_slabs` one exercise. The driver links no lecture: a
+//! lecture that does not compile, or student code that panics, loops or
+//! aborts, costs its own checks and never the grading.
 
-mod bench;
-mod lectures;
-mod shade;
+mod compile;
+mod grade;
+mod handout;
+mod output;
+mod report;
+mod run;
+mod submission;
+mod verdict;
+mod watch;
+mod workspace;
 
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-use clap::{Parser, Subcommand, ValueEnum};
-use l06_shadows::ShadowMode;
-use l08_ray_tree::TraceSettings;
-use l10_textures_sampling::{Filter, Pattern};
-use raylab::{Float, Scene};
+use clap::{Args, Parser, Subcommand, ValueEnum};
 
-use crate::shade::Sampling;
+use crate::grade::{GradeOptions, Selection};
+use crate::workspace::Workspace;
 
 #[derive(Parser)]
-#[command(name = "grader", about = "The raylab workbench: render scenes, compare with snapshots, bless.")]
+#[command(
+    name = "grader",
+    about = "The raylab workbench: grade the lectures, hints, the report, handouts; render scenes.",
+    args_conflicts_with_subcommands = true
+)]
 struct Cli {
     #[command(subcommand)]
-    command: Option<Command>,
+    command: Option<Cmd>,
+    #[command(flatten)]
+    grade: GradeArgs,
+}
+
+#[derive(Args, Clone, Debug)]
+struct GradeArgs {
+    /// What to grade: lectures (03), exercises (03/hit_slabs) or single checks (03/hit_slabs/unit)
+    /// [default: everything]. With a selection only the lectures it needs are built.
+    select: Vec<String>,
+    /// Exit with a failure unless every check passes.
+    #[arg(long)]
+    strict: bool,
+    /// How to print the verdicts.
+    #[arg(long, value_enum, default_value = "table")]
+    format: Format,
+    /// Write the JSON or Gradescope output to this file instead of stdout.
+    #[arg(long, short)]
+    output: Option<PathBuf>,
+    /// Checks run at once [default: the number of cores].
+    #[arg(long)]
+    jobs: Option<usize>,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+enum Format {
+    Table,
+    Json,
+    /// Gradescope's results.json.
+    Gradescope,
 }
 
 #[derive(Subcommand)]
-enum Command {
-    /// Render a TOML or MIT 6.837 scene with the furthest lecture available.
-    Render(RenderArgs),
-    /// Render every lecture's scenes and compare them with the snapshots (the default).
-    Check {
-        /// Only this lecture (e.g. 02).
-        lecture: Option<String>,
+enum Cmd {
+    /// Hints for a lecture's exercises (e.g. `grader hint 05`, `grader hint 05/lambert`).
+    Hint {
+        /// A lecture or exercise.
+        select: String,
     },
-    /// Regenerate the lectures' snapshots (PNG and AOVs) from the reference.
+    /// Re-grade a lecture whenever one of its files changes.
+    Watch,
+    /// Write the student workspace to DIR: every solution becomes `todo!()`.
+    Handout {
+        dir: PathBuf,
+        /// Replace DIR if it exists.
+        #[arg(long)]
+        force: bool,
+    },
+    /// Grade a student's tree: only its `lectures/*/src` is taken, into a pristine copy, hidden checks included.
+    Grade {
+        /// The student's workspace (or a folder with its `lectures/`).
+        #[arg(long)]
+        submission: PathBuf,
+        /// The scratch workspace to grade in (kept between runs so that builds are incremental)
+        /// [default: target/grader/submission].
+        #[arg(long)]
+        workdir: Option<PathBuf>,
+        #[command(flatten)]
+        grade: GradeArgs,
+    },
+    /// Write the Gradescope autograder bundle (setup.sh, run_autograder, the pristine workspace) to DIR.
+    Gradescope {
+        dir: PathBuf,
+        /// Replace DIR if it exists.
+        #[arg(long)]
+        force: bool,
+    },
+    /// Render a scene with the complete tracer (`grader render --help` for the options).
+    #[command(disable_help_flag = true)]
+    Render {
+        #[arg(trailing_var_arg = true, allow_hyphen_values = true)]
+        args: Vec<String>,
+    },
+    /// Regenerate the lectures' snapshots from the reference (instructors).
+    #[command(disable_help_flag = true)]
     Bless {
-        /// Only this lecture (e.g. 02).
-        lecture: Option<String>,
+        #[arg(trailing_var_arg = true, allow_hyphen_values = true)]
+        args: Vec<String>,
     },
-    /// Primary-ray throughput of lecture 09's BVH on a mesh (run with --release).
-    BenchRays(bench::BenchArgs),
+    /// Primary-ray throughput of lecture 09's BVH (run with --release).
+    #[command(disable_help_flag = true)]
+    BenchRays {
+        #[arg(trailing_var_arg = true, allow_hyphen_values = true)]
+        args: Vec<String>,
+    },
+    /// Speed against accuracy, side by side (run with --release).
+    #[command(disable_help_flag = true)]
+    Tradeoffs {
+        #[arg(trailing_var_arg = true, allow_hyphen_values = true)]
+        args: Vec<String>,
+    },
 }
 
-#[derive(clap::Args)]
-struct RenderArgs {
-    /// The scene file (`.toml`, or any other name for the 6.837 format).
-    scene: PathBuf,
-    /// Where to write the image (PNG, or OpenEXR for depth and normal AOVs).
-    #[arg(short, long, default_value = "out.png")]
-    output: PathBuf,
-    /// Image size WxH (overrides the scene's).
-    #[arg(long, value_parser = parse_size)]
-    size: Option<(u32, u32)>,
-    /// Write an arbitrary output variable instead of the shaded image.
-    #[arg(long, value_enum)]
-    aov: Option<Aov>,
-    /// Print ray statistics.
-    #[arg(long)]
-    stats: bool,
-    /// With --stats: print them as JSON.
-    #[arg(long, requires = "stats")]
-    json: bool,
-    /// The deepest level of the ray tree (6.837's -bounces) [default: the scene's `depth`, else 5].
-    #[arg(long)]
-    depth: Option<u32>,
-    /// The smallest contribution a ray may carry to be traced (6.837's -weight) [default: the
-    /// scene's `weight`, else 0.01].
-    #[arg(long)]
-    weight: Option<Float>,
-    /// Shadow rays per area light and shaded point, 1 to 4096 [default: the scene's
-    /// `area_samples`, else 16].
-    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=4096))]
-    samples: Option<u32>,
-    /// Eye rays per pixel, 1 to 1024 [default: the scene's `spp`, else 1].
-    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1024))]
-    spp: Option<u32>,
-    /// Where a pixel's eye rays go [default: jittered with more than one, else the centre].
-    #[arg(long, value_enum)]
-    pattern: Option<PatternArg>,
-    /// How a pixel weighs its eye rays [default: box].
-    #[arg(long, value_enum)]
-    filter: Option<FilterArg>,
-    /// Trace no shadow rays.
-    #[arg(long)]
-    no_shadows: bool,
-    /// Transparent objects filter the light by their transparent colour instead of blocking it
-    /// [default: the scene's `transparent_shadows`, else off].
-    #[arg(long)]
-    transparent_shadows: bool,
-    /// Split transparent surfaces between reflection and refraction by the exact Fresnel reflectance.
-    #[arg(long)]
-    fresnel: bool,
-    /// Print the ray tree of pixel X,Y (0,0 is the top left).
-    #[arg(long, value_parser = parse_pixel)]
-    tree: Option<(u32, u32)>,
-}
-
-impl RenderArgs {
-    /// The scene's own settings ([`shade::scene_settings`]), overridden by the flags given.
-    fn settings(&self, scene: &Scene) -> TraceSettings {
-        let own = shade::scene_settings(scene);
-        TraceSettings {
-            max_depth: self.depth.unwrap_or(own.max_depth),
-            min_weight: self.weight.unwrap_or(own.min_weight),
-            shadows: !self.no_shadows,
-            shadow_mode: if self.transparent_shadows { ShadowMode::Transmissive } else { own.shadow_mode },
-            area_samples: self.samples.unwrap_or(own.area_samples),
-            fresnel: self.fresnel,
-        }
-    }
-
-    /// The scene's sampling ([`shade::scene_sampling`]), overridden by the flags given.
-    fn sampling(&self, scene: &Scene) -> Sampling {
-        let own = shade::scene_sampling(scene);
-        let spp = self.spp.unwrap_or(own.spp);
-        let pattern = match self.pattern {
-            Some(PatternArg::Regular) => Pattern::Regular,
-            Some(PatternArg::Jittered) => Pattern::Jittered,
-            Some(PatternArg::Stratified) => Pattern::Stratified,
-            None if spp > 1 => Pattern::Jittered,
-            None => Pattern::Regular,
-        };
-        let filter = match self.filter {
-            Some(FilterArg::Box) => Filter::Box,
-            Some(FilterArg::Tent) => Filter::Tent,
-            None => own.filter,
-        };
-        Sampling { spp, pattern, filter }
-    }
-}
-
-/// Sample patterns (lecture 10).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
-enum PatternArg {
-    Regular,
-    Jittered,
-    Stratified,
-}
-
-/// Pixel filters (lecture 10).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
-enum FilterArg {
-    Box,
-    Tent,
-}
-
-/// Arbitrary output variables.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
-pub enum Aov {
-    /// The object-id image (scene signature), a colour PNG.
-    Id,
-    /// Distance from the eye along the unit primary ray, 0 where nothing is hit (float EXR).
-    Depth,
-    /// Unit normal facing the camera, 0 where nothing is hit (float EXR).
-    Normal,
-}
-
-fn parse_pixel(s: &str) -> Result<(u32, u32), String> {
-    let (x, y) = s.split_once(',').ok_or_else(|| format!("expected X,Y, e.g. 100,75, found {s:?}"))?;
-    let parse = |v: &str| v.trim().parse::<u32>().map_err(|_| format!("expected a pixel index, found {v:?}"));
-    Ok((parse(x)?, parse(y)?))
-}
-
-fn parse_size(s: &str) -> Result<(u32, u32), String> {
-    let (w, h) =
-        s.split_once(['x', 'X']).ok_or_else(|| format!("expected WxH, e.g. 320x240, found {s:?}"))?;
-    let parse = |v: &str| match v.trim().parse::<u32>() {
-        Ok(n) if (1..=16384).contains(&n) => Ok(n),
-        _ => Err(format!("expected a size from 1 to 16384, found {v:?}")),
-    };
-    Ok((parse(w)?, parse(h)?))
+/// The precision and profile this grader was built with, which the checks
+/// are built with too: `cargo run -p grader --features raylab/f64` grades in f64.
+fn precision_is_f64() -> bool {
+    size_of::<raylab::Float>() == 8
 }
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
-    let result = match cli.command.unwrap_or(Command::Check { lecture: None }) {
-        Command::Render(args) => render(&args),
-        Command::Check { lecture } => lectures::check(lecture.as_deref()),
-        Command::Bless { lecture } => lectures::bless(lecture.as_deref()),
-        Command::BenchRays(args) => bench::bench_rays(&args).map(|()| ExitCode::SUCCESS),
+    let result = match cli.command {
+        None => grade_command(&Workspace::open(&workspace::own_root()), &cli.grade, false, None),
+        Some(Cmd::Hint { select }) => {
+            Workspace::open(&workspace::own_root()).and_then(|ws| hint(&ws, &select))
+        }
+        Some(Cmd::Watch) => {
+            Workspace::open(&workspace::own_root()).and_then(|ws| watch::watch(&ws, options(&ws)))
+        }
+        Some(Cmd::Handout { dir, force }) => {
+            handout::write(&workspace::own_root(), &dir, force).map(|()| true)
+        }
+        Some(Cmd::Grade { submission, workdir, grade }) => {
+            submission::prepare(&workspace::own_root(), &submission, workdir.as_deref())
+                .and_then(|(ws, target)| grade_command(&Ok(ws), &grade, true, Some(target)))
+        }
+        Some(Cmd::Gradescope { dir, force }) => {
+            submission::gradescope_bundle(&workspace::own_root(), &dir, force).map(|()| true)
+        }
+        Some(Cmd::Render { args }) => forward("render", &args),
+        Some(Cmd::Bless { args }) => forward("bless", &args),
+        Some(Cmd::BenchRays { args }) => forward("bench-rays", &args),
+        Some(Cmd::Tradeoffs { args }) => forward("tradeoffs", &args),
     };
     match result {
-        Ok(code) => code,
+        Ok(true) => ExitCode::SUCCESS,
+        Ok(false) => ExitCode::FAILURE,
         Err(message) => {
             eprintln!("error: {message}");
-            ExitCode::FAILURE
+            ExitCode::from(2)
         }
     }
 }
 
-fn render(args: &RenderArgs) -> Result<ExitCode, String> {
-    let mut scene = raylab::scene::load(&args.scene).map_err(|e| e.to_string())?;
-    if let Some((w, h)) = args.size {
-        scene.width = w;
-        scene.height = h;
+/// The grading options of this build of the grader, for all lectures.
+fn options(_ws: &Workspace) -> GradeOptions {
+    GradeOptions {
+        selection: Selection::default(),
+        hidden: false,
+        release: !cfg!(debug_assertions),
+        f64: precision_is_f64(),
+        target_dir: None,
+        only_prerequisites: false,
+        jobs: std::thread::available_parallelism().map_or(2, |n| n.get()),
+        show_progress: true,
+        binary: std::env::var_os("RAYLAB_CHECKS_BINARY").map(PathBuf::from),
     }
-    let settings = args.settings(&scene);
-    if let Some(pixel) = args.tree {
-        let (color, tree) = shade::pixel_tree(&scene, pixel, &settings)?;
-        println!(
-            "pixel ({}, {}): colour ({:.3}, {:.3}, {:.3})\n{tree}",
-            pixel.0, pixel.1, color.x, color.y, color.z
-        );
+}
+
+/// Grades and prints; `Ok(false)` when `--strict` and not everything passed.
+fn grade_command(
+    ws: &Result<Workspace, String>,
+    args: &GradeArgs,
+    hidden: bool,
+    target_dir: Option<PathBuf>,
+) -> Result<bool, String> {
+    let ws = ws.as_ref().map_err(Clone::clone)?;
+    let mut options = options(ws);
+    options.selection = Selection::parse(&args.select)?;
+    options.only_prerequisites = true;
+    options.hidden = hidden;
+    options.target_dir = target_dir;
+    if let Some(jobs) = args.jobs {
+        options.jobs = jobs;
     }
-    let (image, stats) = shade::render_scene(&scene, args.aov, &settings, args.sampling(&scene))?;
-    let write = match args.aov {
-        Some(Aov::Depth | Aov::Normal) => image.save_exr(&args.output),
-        _ => image.save_png(&args.output),
+    // Progress lines would spoil machine-readable output on a terminal that merges the streams.
+    options.show_progress = args.format == Format::Table;
+    let grade = grade::grade(ws, &options)?;
+    let out = grade::out_dir(ws, &options);
+    let report = report::write(ws, &grade, &out);
+    let text = match args.format {
+        Format::Table => output::table(ws, &grade),
+        Format::Json => pretty_json(&output::json(&grade))?,
+        Format::Gradescope => pretty_json(&output::gradescope(&grade))?,
     };
-    write.map_err(|e| e.to_string())?;
-    if args.stats {
-        if args.json {
-            println!("{}", stats.to_json());
-        } else {
-            print!("{stats}");
+    match &args.output {
+        Some(path) => std::fs::write(path, &text).map_err(|e| format!("{}: {e}", path.display()))?,
+        None => print!("{text}"),
+    }
+    if args.format == Format::Table {
+        match report {
+            Ok(path) => println!("report: {}", path.display()),
+            Err(e) => eprintln!("the report could not be written: {e}"),
         }
     }
-    Ok(ExitCode::SUCCESS)
+    Ok(!args.strict || grade.all_passed())
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use std::path::Path;
+fn pretty_json(value: &serde_json::Value) -> Result<String, String> {
+    serde_json::to_string_pretty(value).map(|s| s + "\n").map_err(|e| e.to_string())
+}
 
-    /// A scene whose `[render]` table sets every key.
-    const OWN: &str = "[render]\ndepth = 0\nweight = 0.5\ntransparent_shadows = true\narea_samples = 4\n\
-                       [camera]\ntype = \"perspective\"\neye = [0, 0, 5]\nat = [0, 0, 0]\nfovy = 40\n";
-
-    /// The settings `grader render` uses for the scene `text` with the command-line `flags`.
-    fn settings(text: &str, flags: &[&str]) -> TraceSettings {
-        let scene = raylab::scene::parse_toml(text, Path::new("s.toml")).unwrap_or_else(|e| panic!("{e}"));
-        let argv = ["grader", "render", "s.toml"].into_iter().chain(flags.iter().copied());
-        let Some(Command::Render(args)) = Cli::try_parse_from(argv).unwrap_or_else(|e| panic!("{e}")).command
-        else {
-            panic!("a render command");
-        };
-        args.settings(&scene)
-    }
-
-    #[test]
-    fn the_scene_sets_what_the_flags_leave_and_the_defaults_the_rest() {
-        let default = TraceSettings::default();
-        let transmissive = ShadowMode::Transmissive;
-        // The scene's own table, every key.
-        let own = TraceSettings {
-            max_depth: 0,
-            min_weight: 0.5,
-            shadow_mode: transmissive,
-            area_samples: 4,
-            ..default
-        };
-        assert_eq!(settings(OWN, &[]), own);
-        // Every flag given: the flags win.
-        let flags = ["--depth", "3", "--weight", "0.25", "--samples", "9", "--no-shadows", "--fresnel"];
-        let expected = TraceSettings {
-            max_depth: 3,
-            min_weight: 0.25,
-            shadows: false,
-            shadow_mode: transmissive,
-            area_samples: 9,
-            fresnel: true,
-        };
-        assert_eq!(settings(OWN, &flags), expected);
-        // One flag: only that one changes.
-        assert_eq!(settings(OWN, &["--samples", "64"]), TraceSettings { area_samples: 64, ..own });
-        // No table, no flags: the defaults (6.837 files are always so); the flag turns on
-        // transparent shadows, there being no flag to turn them off.
-        let plain = &OWN[OWN.find("[camera]").unwrap()..];
-        assert_eq!(settings(plain, &[]), default);
-        assert_eq!(settings(plain, &["--transparent-shadows"]).shadow_mode, transmissive);
-    }
-
-    #[test]
-    fn a_sample_count_outside_1_to_4096_is_refused() {
-        for n in ["0", "4097", "-1", "many"] {
-            assert!(Cli::try_parse_from(["grader", "render", "s.toml", "--samples", n]).is_err(), "{n}");
+/// `grader hint 05` or `grader hint 05/lambert`.
+fn hint(ws: &Workspace, select: &str) -> Result<bool, String> {
+    let selection = Selection::parse(&[select])?;
+    let lecture = selection.lectures()[0];
+    let hints = ws.hints(lecture)?;
+    let exercise = selection.0[0].split('/').nth(1);
+    let mut shown = 0;
+    for (name, lines) in &hints {
+        if exercise.is_some_and(|e| e != name) {
+            continue;
         }
-        assert!(Cli::try_parse_from(["grader", "render", "s.toml", "--samples", "4096"]).is_ok());
+        println!("{lecture}/{name}");
+        for (i, line) in lines.iter().enumerate() {
+            println!("  {}. {line}", i + 1);
+        }
+        shown += 1;
     }
+    if shown == 0 {
+        let known: Vec<&str> = hints.keys().map(String::as_str).collect();
+        return Err(format!("no hints for {select}; lecture {lecture} has hints for: {}", known.join(", ")));
+    }
+    Ok(true)
+}
+
+/// Builds the checks with every lecture and runs one of its tools.
+fn forward(tool: &str, args: &[String]) -> Result<bool, String> {
+    let ws = Workspace::open(&workspace::own_root())?;
+    let mut options = options(&ws);
+    options.show_progress = true;
+    let binary = match options.binary.clone() {
+        Some(binary) => binary,
+        None => {
+            let all = ws.lectures.iter().map(|l| l.number.clone()).collect();
+            let built = compile::build(
+                &ws,
+                &compile::BuildOptions {
+                    lectures: all,
+                    hidden: false,
+                    release: options.release,
+                    f64: options.f64,
+                    target_dir: None,
+                    show_progress: true,
+                },
+            )?;
+            if let Some((lecture, error)) = built.failed.iter().next() {
+                return Err(format!(
+                    "`grader {tool}` uses every lecture, and lecture {lecture} does not compile: {} at {}",
+                    error.message, error.location
+                ));
+            }
+            built.binary
+        }
+    };
+    let status = std::process::Command::new(&binary)
+        .arg(tool)
+        .args(args)
+        .status()
+        .map_err(|e| format!("could not run {}: {e}", binary.display()))?;
+    Ok(status.success())
 }

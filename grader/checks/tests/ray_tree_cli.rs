@@ -6,10 +6,10 @@ use std::process::Command;
 
 #[test]
 fn the_tree_of_a_glass_sphere_pixel_reads_as_the_ray_tree_of_the_slides() {
-    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
     let scene = root.join("lectures/07-reflection-refraction/scenes/glass-spheres.toml");
     let out_png = std::env::temp_dir().join(format!("raylab-tree-{}.png", std::process::id()));
-    let out = Command::new(env!("CARGO_BIN_EXE_grader"))
+    let out = Command::new(env!("CARGO_BIN_EXE_raylab-checks"))
         .args(["render", scene.to_str().unwrap(), "--tree", "100,75", "-o", out_png.to_str().unwrap()])
         .output()
         .expect("the grader runs");

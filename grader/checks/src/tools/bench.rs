@@ -31,7 +31,7 @@ pub struct BenchArgs {
     #[arg(long, value_parser = clap::value_parser!(u32).range(18..=50_000_000))]
     pub generated: Option<u32>,
     /// Image size WxH: one primary ray per pixel.
-    #[arg(long, value_parser = crate::parse_size, default_value = "1000x1000")]
+    #[arg(long, value_parser = crate::tools::render::parse_size, default_value = "1000x1000")]
     pub size: (u32, u32),
     /// The camera's eye X,Y,Z.
     #[arg(long, value_parser = parse_vec3, default_value = "0,0,4", allow_hyphen_values = true)]

@@ -6,7 +6,7 @@ use std::process::{Command, Output};
 use raylab::{Float, Image, Vec3};
 
 fn grader(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_grader")).args(args).output().expect("the grader runs")
+    Command::new(env!("CARGO_BIN_EXE_raylab-checks")).args(args).output().expect("the grader runs")
 }
 
 fn temp_dir(name: &str) -> PathBuf {
@@ -141,7 +141,7 @@ fn supersampling_the_receding_checker_brings_it_closer_to_the_converged_image() 
     // Lecture 10's aliasing scene at 1, 16 and 256 jittered rays per pixel: 256 stands in
     // for the converged image; 16 must be nearer to it than 1 is (mean absolute error over
     // all pixels and channels), which is the speed/accuracy trade of supersampling.
-    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
     let scene = root.join("lectures/10-textures-sampling/scenes/checker-aliasing-1spp.toml");
     let dir = temp_dir("spp");
     let render = |spp: &str| {

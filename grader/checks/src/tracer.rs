@@ -11,7 +11,16 @@ use raylab::scene::Material;
 use raylab::stats::{RayStats, measure};
 use raylab::{Color, Hit, Image, Scene};
 
-use crate::Aov;
+/// Arbitrary output variables.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum Aov {
+    /// The object-id image (scene signature), a colour PNG.
+    Id,
+    /// Distance from the eye along the unit primary ray, 0 where nothing is hit (float EXR).
+    Depth,
+    /// Unit normal facing the camera, 0 where nothing is hit (float EXR).
+    Normal,
+}
 
 /// The tracer's settings for `scene`: what its `[render]` table says, and
 /// [`TraceSettings::default`] for what it does not (6.837 files say nothing).

@@ -1,0 +1,256 @@
+//! What a check is, what it reports, and the small vocabulary the lecture
+//! checks are written in.
+//!
+//! A check tests one exercise (`02/hit_sphere_geometric`) or one scene of a
+//! lecture. It runs alone in a child process (`raylab-checks run ID`), so a
+//! panic, a loop or an abort in the student's code ends that process only;
+//! the grader reads the verdict file the check wrote, or, when there is none,
+//! how the process ended.
+
+use std::fmt::Display;
+
+use raylab::{Float, Vec3};
+use serde::{Deserialize, Serialize};
+
+/// The kinds of check (DESIGN.md, "The grader").
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Kind {
+    /// Exact expectations with stated tolerances, at ordinary inputs.
+    Unit,
+    /// The stability cases of the lecture: far, tiny, grazing, degenerate.
+    Extreme,
+    /// A lecture scene rendered with the student's code against its snapshot.
+    Image,
+}
+
+/// A check as the lecture tables declare it.
+#[derive(Clone, Copy, Debug)]
+pub struct Meta {
+    /// The exercise tested: the function's name (`hit_slabs`,
+    /// `PerspectiveCamera::generate_ray`), or `image`/`geometry` for scenes.
+    pub exercise: &'static str,
+    /// Which check of the exercise (`unit`, `axis-parallel-rays`, …).
+    pub name: &'static str,
+    pub kind: Kind,
+    pub points: u32,
+    /// Other exercises whose result this check relies on, as `NN/function`:
+    /// when one of them is not started or fails, the verdict says "blocked".
+    pub needs: &'static [&'static str],
+    /// What the check tests, in one line (shown with a failure and in the report).
+    pub about: &'static str,
+}
+
+impl Meta {
+    pub const fn unit(exercise: &'static str, about: &'static str) -> Self {
+        Self { exercise, name: "unit", kind: Kind::Unit, points: 1, needs: &[], about }
+    }
+
+    pub const fn extreme(exercise: &'static str, name: &'static str, about: &'static str) -> Self {
+        Self { exercise, name, kind: Kind::Extreme, points: 1, needs: &[], about }
+    }
+
+    /// A hidden check's name (`hidden-…`), so its id never collides with a visible one.
+    pub const fn named_hidden(self, name: &'static str) -> Self {
+        Self { name, ..self }
+    }
+
+    pub const fn points(self, points: u32) -> Self {
+        Self { points, ..self }
+    }
+
+    pub const fn needs(self, needs: &'static [&'static str]) -> Self {
+        Self { needs, ..self }
+    }
+}
+
+/// A check as the grader sees it: lecture, id, and the declaration.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct Info {
+    /// `NN/exercise/name`.
+    pub id: String,
+    pub lecture: String,
+    pub exercise: String,
+    pub kind: Kind,
+    pub points: u32,
+    pub needs: Vec<String>,
+    pub about: String,
+    /// Seen only by `grader grade --submission`.
+    pub hidden: bool,
+    /// Wall-clock seconds before the grader stops it.
+    pub timeout_s: u32,
+    /// Its code is in this build (its lecture compiled).
+    pub available: bool,
+}
+
+impl Info {
+    pub fn new(lecture: &str, meta: &Meta, hidden: bool, available: bool) -> Self {
+        Self {
+            id: format!("{lecture}/{}/{}", meta.exercise, meta.name),
+            lecture: lecture.to_owned(),
+            exercise: meta.exercise.to_owned(),
+            kind: meta.kind,
+            points: meta.points,
+            needs: meta.needs.iter().map(|n| (*n).to_owned()).collect(),
+            about: meta.about.to_owned(),
+            hidden,
+            timeout_s: match meta.kind {
+                Kind::Image => IMAGE_TIMEOUT_S,
+                _ => UNIT_TIMEOUT_S,
+            },
+            available,
+        }
+    }
+}
+
+/// A unit or extreme check's time limit. The reference runs each in well
+/// under a second in a debug build; the limit leaves room for a loaded
+/// machine and a slow but correct student solution, and still ends an
+/// infinite loop quickly.
+pub const UNIT_TIMEOUT_S: u32 = 10;
+
+/// An image check's time limit: the reference renders the largest lecture
+/// scene (64 area-light samples per pixel) in about 2 s in a debug build on
+/// one thread.
+pub const IMAGE_TIMEOUT_S: u32 = 60;
+
+/// Images a failed image check wrote, relative to the workspace root.
+#[derive(Clone, Debug, Default, Serialize, Deserialize, PartialEq)]
+pub struct Images {
+    pub expected: String,
+    pub yours: String,
+    pub diff: String,
+    /// Mean FLIP error of yours against expected (0 = identical, 1 = opposite).
+    pub flip_mean: f64,
+    /// The fraction of pixels whose FLIP error is above [`crate::images::FLIP_THRESHOLD`].
+    pub flip_fraction_over: f64,
+}
+
+/// How a check that ran to its end came out; written as JSON to the verdict
+/// file the grader names.
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+#[serde(tag = "status", rename_all = "lowercase")]
+pub enum Outcome {
+    Passed {
+        /// What was measured, e.g. "0.02 % of pixels differ".
+        detail: String,
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        images: Option<Images>,
+    },
+    Failed(Failure),
+}
+
+/// A failed expectation: what was expected, what came, and the likely cause.
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq, Default)]
+pub struct Failure {
+    /// The case, e.g. "ray from (0, 0, 5) along −z, sphere r = 1 at the origin".
+    pub case: String,
+    pub expected: String,
+    pub got: String,
+    /// One line: the likely cause in the student's code.
+    pub cause: String,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub images: Option<Box<Images>>,
+}
+
+/// What a check function returns: a detail line when it passes.
+pub type CheckResult = Result<String, Failure>;
+
+/// A failure of `case`: `expected`, `got`, and the likely `cause`.
+pub fn fail(case: impl Display, expected: impl Display, got: impl Display, cause: impl Display) -> Failure {
+    Failure {
+        case: case.to_string(),
+        expected: expected.to_string(),
+        got: got.to_string(),
+        cause: cause.to_string(),
+        images: None,
+    }
+}
+
+/// Fails unless `condition`.
+pub fn ensure(
+    condition: bool,
+    case: impl Display,
+    expected: impl Display,
+    got: impl Display,
+    cause: impl Display,
+) -> Result<(), Failure> {
+    if condition { Ok(()) } else { Err(fail(case, expected, got, cause)) }
+}
+
+/// Fails unless `got` is within `tolerance` of `expected` (absolute); NaN
+/// never passes.
+pub fn close(
+    case: impl Display,
+    got: Float,
+    expected: Float,
+    tolerance: Float,
+    cause: &str,
+) -> Result<(), Failure> {
+    let ok = (got - expected).abs() <= tolerance;
+    ensure(ok, case, format!("{} (± {tolerance:.1e})", num(expected)), num(got), cause)
+}
+
+/// Fails unless every component of `got` is within `tolerance` of `expected`.
+pub fn close3(
+    case: impl Display,
+    got: Vec3,
+    expected: Vec3,
+    tolerance: Float,
+    cause: &str,
+) -> Result<(), Failure> {
+    let ok = (got - expected).abs().max_element() <= tolerance;
+    ensure(ok, case, format!("{} (± {tolerance:.1e} each)", vec3(expected)), vec3(got), cause)
+}
+
+/// `x` in f64, whatever `Float` is: for ground truth computed wider.
+#[allow(clippy::useless_conversion, reason = "Float is f64 with the kit's f64 feature")]
+pub fn wide(x: Float) -> f64 {
+    f64::from(x)
+}
+
+/// A number printed for a student: four decimals, or scientific when tiny or huge.
+pub fn num(x: Float) -> String {
+    let a = x.abs();
+    if x == 0.0 || (1e-3..1e6).contains(&a) {
+        format!("{x:.4}")
+    } else if x.is_finite() {
+        format!("{x:.4e}")
+    } else {
+        format!("{x}")
+    }
+}
+
+/// A vector printed for a student.
+pub fn vec3(v: Vec3) -> String {
+    format!("({}, {}, {})", num(v.x), num(v.y), num(v.z))
+}
+
+/// An optional value printed for a student: "no hit" for `None`.
+pub fn maybe<T>(value: &Option<T>, show: impl Fn(&T) -> String) -> String {
+    value.as_ref().map_or_else(|| "None (no hit)".to_owned(), show)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn outcomes_round_trip_through_json() {
+        let failed = Outcome::Failed(fail("a ray", "t = 4", "t = 6", "the far root"));
+        let text = serde_json::to_string(&failed).unwrap();
+        assert!(text.starts_with(r#"{"status":"failed","case":"a ray""#), "{text}");
+        assert_eq!(serde_json::from_str::<Outcome>(&text).unwrap(), failed);
+        let passed = Outcome::Passed { detail: "ok".into(), images: None };
+        assert_eq!(serde_json::to_string(&passed).unwrap(), r#"{"status":"passed","detail":"ok"}"#);
+    }
+
+    #[test]
+    fn close_refuses_nan_and_shows_both_numbers() {
+        assert!(close("x", 1.0, 1.0 + 1e-7, 1e-6, "").is_ok());
+        let e = close("x", Float::NAN, 1.0, 1e-6, "a NaN").unwrap_err();
+        assert_eq!((e.expected.as_str(), e.got.as_str()), ("1.0000 (± 1.0e-6)", "NaN"));
+        assert_eq!(num(1.0e-5), "1.0000e-5");
+        assert_eq!(num(-2.5), "-2.5000");
+    }
+}

@@ -1,0 +1,588 @@
+//! Image checks: every `lectures/NN-name/scenes/S.toml` rendered with the
+//! student's code and compared with the reference snapshots
+//! `lectures/NN-name/snapshots/S.png` (shaded), `S.id.png`, `S.depth.exr` and
+//! `S.normal.exr`, which `grader bless` writes.
+//!
+//! Checks per scene:
+//! - `NN/geometry/S` (lectures 01–04 and 09): the object-id, depth and normal images, made with the
+//!   intersections of the lecture that introduces the scene's shapes (02 for
+//!   spheres and planes, 03 for boxes, polygons and meshes, 04 for quadrics
+//!   and transforms, 09's hierarchy for its own big scenes; lecture 01's
+//!   camera scenes hold boxes and cylinders, so 04's). It needs no
+//!   shading, so it is lecture 02–04's own image check.
+//! - `NN/image/S`: the shaded image from the complete tracer (lectures 01–10).
+//!   When it differs, the geometry is compared first, and the differences
+//!   are located (which materials, facing the light or not, speckled or in
+//!   patches) to name the likely stage.
+
+use std::path::{Path, PathBuf};
+
+use raylab::compare::compare;
+use raylab::{Color, Float, Image, Scene, Vec3};
+
+use crate::check::{CheckResult, Failure, Images, Info, Kind, Meta, fail};
+
+/// A pixel differs when one of its 8-bit sRGB channels moves by more than
+/// this many steps: the f32 and f64 builds differ by a step or two where
+/// shading rounds differently.
+pub const CHANNEL_THRESHOLD: u8 = 2;
+
+/// A render passes when at most this fraction of its pixels differ: f32 and
+/// f64 disagree on hit or miss only for pixel rays within a few ulp of a
+/// silhouette (measured: well under 0.1 % on the lecture scenes).
+pub const MAX_FRACTION_OVER: f64 = 0.002;
+
+/// A FLIP error above this is a difference a viewer notices at a glance
+/// (FLIP's own scale: 0 identical, 1 opposite); the report counts such pixels.
+pub const FLIP_THRESHOLD: f32 = 0.25;
+
+/// Scenes that test precision itself, with the fraction they may differ by
+/// and why.
+/// - `06-shadows/far-from-origin` sits at 10⁴, where an f32 ulp is 0.001:
+///   the f32 snapshot's highlight (normals from p − c) and shadow edges are
+///   off by that much, and the f64 build draws them more accurately
+///   (measured 0.41 % of pixels apart).
+/// - `10-textures-sampling/checker-aliasing-16spp`: toward the horizon many
+///   checker cells share a pixel, so a rounding-level shift of one of its 16
+///   jittered rays flips the cell it lands in and moves the pixel by 1/16
+///   (measured 0.33 % of pixels apart; the 1-spp twin matches exactly).
+const PRECISION_SCENES: &[(&str, &str, f64)] =
+    &[("06", "far-from-origin", 0.01), ("10", "checker-aliasing-16spp", 0.01)];
+
+/// Depth and normal tolerances of the geometry check: a pixel's depth
+/// differs when it is off by more than 10⁻³ relative (f32 and f64 agree to
+/// ~10⁻⁶ on these scenes; the catalogued mistakes are off by 10 % or more),
+/// a normal when a component is off by more than 10⁻³.
+const DEPTH_RELATIVE_TOLERANCE: Float = 1e-3;
+const NORMAL_TOLERANCE: Float = 1e-3;
+
+/// One lecture scene.
+#[derive(Clone, Debug)]
+pub struct SceneFile {
+    /// `02`.
+    pub lecture: String,
+    /// `02-ray-casting`.
+    pub folder: String,
+    pub scene: PathBuf,
+    pub snapshots: PathBuf,
+}
+
+impl SceneFile {
+    pub fn name(&self) -> String {
+        self.scene.file_stem().unwrap_or_default().to_string_lossy().into_owned()
+    }
+
+    pub fn snapshot(&self, suffix: &str) -> PathBuf {
+        self.snapshots.join(format!("{}{suffix}", self.name()))
+    }
+
+    /// The fraction of pixels this scene may differ by.
+    fn allowed_fraction(&self) -> f64 {
+        PRECISION_SCENES
+            .iter()
+            .find(|(lecture, scene, _)| *lecture == self.lecture && *scene == self.name())
+            .map_or(MAX_FRACTION_OVER, |&(_, _, fraction)| fraction)
+    }
+}
+
+/// The workspace root: this crate lives in `<root>/grader/checks`.
+pub fn workspace_root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
+}
+
+/// Every `lectures/NN-*/scenes/*.toml`, sorted; only lecture `only` if given
+/// (`02` or `02-ray-casting`).
+pub fn scene_files(only: Option<&str>) -> Result<Vec<SceneFile>, String> {
+    let lectures = workspace_root().join("lectures");
+    let mut found = Vec::new();
+    for lecture in sorted_entries(&lectures)? {
+        let folder = lecture.file_name().unwrap_or_default().to_string_lossy().into_owned();
+        if only.is_some_and(|o| !folder.starts_with(o)) || !lecture.join("scenes").is_dir() {
+            continue;
+        }
+        for scene in sorted_entries(&lecture.join("scenes"))? {
+            if scene.extension().is_some_and(|e| e == "toml") {
+                found.push(SceneFile {
+                    lecture: folder.chars().take(2).collect(),
+                    folder: folder.clone(),
+                    scene,
+                    snapshots: lecture.join("snapshots"),
+                });
+            }
+        }
+    }
+    Ok(found)
+}
+
+fn sorted_entries(dir: &Path) -> Result<Vec<PathBuf>, String> {
+    let entries = std::fs::read_dir(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+    let mut paths: Vec<PathBuf> = entries.filter_map(|e| e.ok().map(|e| e.path())).collect();
+    paths.sort();
+    Ok(paths)
+}
+
+/// The geometry and image checks of every scene, as the grader lists them.
+pub fn infos() -> Vec<Info> {
+    let mut infos = Vec::new();
+    for file in scene_files(None).unwrap_or_default() {
+        let name: &'static str = Box::leak(file.name().into_boxed_str());
+        let geometry = Meta {
+            exercise: "geometry",
+            name,
+            kind: Kind::Image,
+            points: 1,
+            needs: &[],
+            about: "object-id, depth and normal images against the reference's",
+        };
+        if has_geometry_check(&file.lecture) {
+            infos.push(Info::new(&file.lecture, &geometry, false, geometry_available(&file.lecture)));
+        }
+        let image = Meta {
+            exercise: "image",
+            name,
+            about: "the shaded image from the complete tracer (lectures 01–10) against the snapshot",
+            ..geometry
+        };
+        infos.push(Info::new(&file.lecture, &image, false, cfg!(feature = "l10")));
+    }
+    infos
+}
+
+/// Lectures 01–04 (cameras and intersections) and 09 (the hierarchy) are
+/// graded on their scenes' geometry; for the others the geometry is only
+/// compared to explain a failed image.
+fn has_geometry_check(lecture: &str) -> bool {
+    matches!(lecture, "01" | "02" | "03" | "04" | "09")
+}
+
+/// Whether the intersections that draw lecture `lecture`'s scenes are built.
+fn geometry_available(lecture: &str) -> bool {
+    match lecture {
+        "02" => cfg!(feature = "l02"),
+        "03" => cfg!(feature = "l03"),
+        "09" => cfg!(feature = "l09"),
+        _ => cfg!(feature = "l04"),
+    }
+}
+
+/// Runs `NN/geometry/S` or `NN/image/S`, writing images under `out`; `None`
+/// when the id names no scene check.
+pub fn run(id: &str, out: &Path) -> Option<CheckResult> {
+    let mut parts = id.splitn(3, '/');
+    let (lecture, kind, name) = (parts.next()?, parts.next()?, parts.next()?);
+    let file = scene_files(None).ok()?.into_iter().find(|f| f.lecture == lecture && f.name() == name)?;
+    let dir = out.join(&file.lecture).join(file.name());
+    match kind {
+        "geometry" if has_geometry_check(lecture) && geometry_available(lecture) => {
+            Some(check_geometry(&file))
+        }
+        "image" if cfg!(feature = "l10") => Some(check_image(&file, &dir)),
+        _ => None,
+    }
+}
+
+/// The three geometry images of `scene` drawn with the intersections of the
+/// scene's lecture (see the module documentation).
+#[allow(unused_variables)]
+pub fn geometry_images(lecture: &str, scene: &Scene) -> Result<[Image; 3], String> {
+    #[cfg(feature = "l02")]
+    {
+        use l01_transforms::Camera;
+        use l02_ray_casting::{depth_image, normal_image, object_id_image};
+        let camera =
+            Camera::from_scene(&scene.camera, scene.width, scene.height).map_err(|e| e.to_string())?;
+        let (w, h) = (scene.width, scene.height);
+        macro_rules! draw {
+            ($objects:expr) => {{
+                let objects = $objects;
+                Ok([
+                    object_id_image(&camera, &objects, w, h),
+                    depth_image(&camera, &objects, w, h),
+                    normal_image(&camera, &objects, w, h),
+                ])
+            }};
+        }
+        match lecture {
+            "02" => return draw!(l02_ray_casting::Group::new(&scene.objects)),
+            #[cfg(feature = "l03")]
+            "03" => return draw!(crate::scene_objects::Lecture03(&scene.objects)),
+            #[cfg(feature = "l09")]
+            "09" => {
+                let objects = l09_acceleration::intersector_for(&scene.objects);
+                return draw!(objects.as_ref());
+            }
+            #[cfg(feature = "l04")]
+            _ => return draw!(l04_quadrics_transforms::BruteForce::new(&scene.objects)),
+            #[allow(unreachable_patterns)]
+            _ => {}
+        }
+    }
+    Err(format!("the intersections for lecture {lecture}'s scenes are not built"))
+}
+
+/// How the three geometry images differ from the snapshots: `None` when
+/// they match.
+fn geometry_difference(file: &SceneFile, scene: &Scene) -> Result<Option<Failure>, String> {
+    let [id, depth, normal] = geometry_images(&file.lecture, scene)?;
+    let load_png = |suffix| Image::load_png(file.snapshot(suffix)).map_err(|e| no_snapshot(file, e));
+    let load_exr = |suffix| Image::load_exr(file.snapshot(suffix)).map_err(|e| no_snapshot(file, e));
+    let (id_ref, depth_ref, normal_ref) =
+        (load_png(".id.png")?, load_exr(".depth.exr")?, load_exr(".normal.exr")?);
+    let allowed = file.allowed_fraction();
+    let case = format!("{}/{} ({}×{})", file.folder, file.name(), scene.width, scene.height);
+    let size = |image: &Image| format!("{}×{}", image.width, image.height);
+    for (yours, reference) in [(&id, &id_ref), (&depth, &depth_ref), (&normal, &normal_ref)] {
+        if (yours.width, yours.height) != (reference.width, reference.height) {
+            return Ok(Some(fail(
+                &case,
+                format!("a {} image", size(reference)),
+                size(yours),
+                "one pixel per (x, y) for x < width, y < height, row by row from the top",
+            )));
+        }
+    }
+    // The object ids: which object each pixel sees.
+    let ids = compare(&id_ref, &id, 0)?;
+    if ids.fraction_over() > allowed {
+        let (x, y) = ids.first_over.unwrap_or_default();
+        return Ok(Some(fail(
+            &case,
+            format!("object {} at pixel ({x}, {y})", describe_id(&id_ref, x, y, scene)),
+            format!(
+                "object {} there, and {:.2} % of pixels see another object than the reference",
+                describe_id(&id, x, y, scene),
+                100.0 * ids.fraction_over()
+            ),
+            "hit or miss, or which object is nearest, differs: check the intersection tests and that \
+             closest_hit keeps the nearest hit (range shrinks to each hit's t)",
+        )));
+    }
+    // The depths: the right objects at the wrong distance.
+    let depth_off = differing(&depth_ref, &depth, |e, y| {
+        let d = (e.x - y.x).abs();
+        d.is_nan() || d > DEPTH_RELATIVE_TOLERANCE * e.x.abs().max(1e-3)
+    });
+    if depth_off.0 as f64 > allowed * depth.pixels.len() as f64 {
+        let (x, y) = depth_off.1;
+        return Ok(Some(fail(
+            &case,
+            format!("depth {:.4} at pixel ({x}, {y})", depth_ref.get(x, y).x),
+            format!("{:.4} ({} pixels off by more than 0.1 %)", depth.get(x, y).x, depth_off.0),
+            "the right objects at the wrong distance: t must be in units of the ray's dir (depth = t·|d|), \
+             and a transformed object's t must not come from a renormalised object-space direction",
+        )));
+    }
+    // The normals.
+    let normal_off = differing(&normal_ref, &normal, |e, y| {
+        let d = (*e - *y).abs().max_element();
+        d.is_nan() || d > NORMAL_TOLERANCE
+    });
+    if normal_off.0 as f64 > allowed * normal.pixels.len() as f64 {
+        let (x, y) = normal_off.1;
+        let (e, g) = (normal_ref.get(x, y), normal.get(x, y));
+        let cause = if (e + g).length() < 1e-2 {
+            "your normal is the reference's negated: it must face the ray (Hit::new flips it for hits from inside)"
+        } else {
+            "unit normals, facing the ray: (p − c)/r for spheres, the face normal for flat shapes, and \
+             (M⁻¹)ᵀ n renormalised for transformed objects (not M n)"
+        };
+        return Ok(Some(fail(
+            &case,
+            format!("normal ({:.3}, {:.3}, {:.3}) at pixel ({x}, {y})", e.x, e.y, e.z),
+            format!("({:.3}, {:.3}, {:.3}) ({} pixels differ)", g.x, g.y, g.z, normal_off.0),
+            cause,
+        )));
+    }
+    Ok(None)
+}
+
+/// How many pixels `differs` says differ, and the first of them.
+fn differing(
+    expected: &Image,
+    yours: &Image,
+    differs: impl Fn(&Color, &Color) -> bool,
+) -> (usize, (u32, u32)) {
+    let mut count = 0;
+    let mut first = None;
+    for (i, (e, y)) in expected.pixels.iter().zip(&yours.pixels).enumerate() {
+        if differs(e, y) {
+            count += 1;
+            first.get_or_insert(((i % expected.width as usize) as u32, (i / expected.width as usize) as u32));
+        }
+    }
+    (count, first.unwrap_or_default())
+}
+
+/// "#2 (sphere)" for the object whose id colour pixel (x, y) shows, "none" for the background.
+fn describe_id(image: &Image, x: u32, y: u32, scene: &Scene) -> String {
+    let pixel = raylab::color::to_srgb8(image.get(x, y));
+    if pixel == [0, 0, 0] {
+        return "none (background)".into();
+    }
+    #[cfg(feature = "l02")]
+    for (index, object) in scene.objects.iter().enumerate() {
+        if raylab::color::to_srgb8(l02_ray_casting::id_color(Some(index))) == pixel {
+            return format!("#{index} ({})", object.shape.kind());
+        }
+    }
+    format!("with colour {pixel:?}")
+}
+
+fn no_snapshot(file: &SceneFile, e: impl std::fmt::Display) -> String {
+    format!("no snapshot for {}/{}: {e} (an instructor runs `grader bless`)", file.folder, file.name())
+}
+
+fn check_geometry(file: &SceneFile) -> CheckResult {
+    let scene = raylab::scene::load(&file.scene)
+        .map_err(|e| fail(&file.folder, "the scene loads", e, "the scene file"))?;
+    match geometry_difference(file, &scene) {
+        Ok(None) => Ok("object ids, depths and normals match".into()),
+        Ok(Some(failure)) => Err(failure),
+        Err(e) => Err(fail(format!("{}/{}", file.folder, file.name()), "the geometry images", e, "")),
+    }
+}
+
+#[cfg(not(feature = "l10"))]
+fn check_image(_: &SceneFile, _: &Path) -> CheckResult {
+    unreachable!("image checks run only when every lecture is built")
+}
+
+/// Renders `file` with its `[render]` settings and compares it with its
+/// snapshot; writes expected / yours / diff (the FLIP error map) into `dir`.
+#[cfg(feature = "l10")]
+fn check_image(file: &SceneFile, dir: &Path) -> CheckResult {
+    use crate::tracer::{render_scene, scene_sampling, scene_settings};
+    let case = format!("{}/{}", file.folder, file.name());
+    let scene = raylab::scene::load(&file.scene).map_err(|e| fail(&case, "the scene loads", e, ""))?;
+    let expected = Image::load_png(file.snapshot(".png"))
+        .map_err(|e| fail(&case, "a snapshot", no_snapshot(file, e), ""))?;
+    let (yours, _) = render_scene(&scene, None, &scene_settings(&scene), scene_sampling(&scene))
+        .map_err(|e| fail(&case, "an image", e, ""))?;
+    let c = compare(&expected, &yours, CHANNEL_THRESHOLD).map_err(|e| {
+        fail(&case, format!("{}×{}", expected.width, expected.height), e, "one pixel per (x, y), row by row")
+    })?;
+    let images = write_images(dir, &expected, &yours).map_err(|e| fail(&case, "images written", e, ""))?;
+    let allowed = file.allowed_fraction();
+    let measured = format!(
+        "{:.3} % of pixels differ by more than {CHANNEL_THRESHOLD} steps (allowed {:.2} %); mean FLIP {:.4}",
+        100.0 * c.fraction_over(),
+        100.0 * allowed,
+        images.flip_mean
+    );
+    let tree_file = dir.join("tree.txt");
+    let _ = std::fs::remove_file(&tree_file);
+    if c.fraction_over() <= allowed {
+        return Ok(measured);
+    }
+    let (x, y) = c.first_over.unwrap_or_default();
+    // The ray tree of the first differing pixel, for the report.
+    if let Ok((color, tree)) = crate::tracer::pixel_tree(&scene, (x, y), &scene_settings(&scene)) {
+        let text = format!(
+            "your ray tree of pixel ({x}, {y}), the first that differs: colour ({:.3}, {:.3}, {:.3})\n{tree}",
+            color.x, color.y, color.z
+        );
+        let _ = std::fs::write(&tree_file, text);
+    }
+    let cause = match geometry_difference(file, &scene) {
+        Ok(Some(geometry)) => format!(
+            "the geometry differs already ({}: expected {}, got {}): fix {}/geometry/{} first",
+            geometry.case,
+            geometry.expected,
+            geometry.got,
+            file.lecture,
+            file.name()
+        ),
+        Ok(None) => format!("your geometry matches; {}", shading_diagnosis(&scene, &expected, &yours)),
+        Err(e) => e,
+    };
+    let show = |c: Color| format!("({:.3}, {:.3}, {:.3})", c.x, c.y, c.z);
+    Err(Failure {
+        case,
+        expected: format!("pixel ({x}, {y}) = {} (linear RGB)", show(expected.get(x, y))),
+        got: format!("{}; {measured}", show(yours.get(x, y))),
+        cause,
+        images: Some(Box::new(images)),
+    })
+}
+
+/// Where the differing pixels of a shaded image lie, and what that points to.
+#[cfg(feature = "l10")]
+fn shading_diagnosis(scene: &Scene, expected: &Image, yours: &Image) -> String {
+    let Ok([id, depth, normal]) = geometry_images_reference(scene) else {
+        return "the shading differs".into();
+    };
+    let camera = l01_transforms::Camera::from_scene(&scene.camera, scene.width, scene.height).ok();
+    let (w, h) = (expected.width, expected.height);
+    let mut over = vec![false; (w * h) as usize];
+    for (i, (e, g)) in expected.pixels.iter().zip(&yours.pixels).enumerate() {
+        let (e, g) = (raylab::color::to_srgb8(*e), raylab::color::to_srgb8(*g));
+        over[i] = (0..3).any(|c| e[c].abs_diff(g[c]) > CHANNEL_THRESHOLD) || !yours.pixels[i].is_finite();
+    }
+    let (mut total, mut glossy, mut facing_away, mut isolated, mut darker, mut nan) = (0, 0, 0, 0, 0, 0);
+    for y in 0..h {
+        for x in 0..w {
+            let i = (y * w + x) as usize;
+            if !over[i] {
+                continue;
+            }
+            total += 1;
+            nan += usize::from(!yours.pixels[i].is_finite());
+            darker += usize::from(luminance(yours.pixels[i]) < luminance(expected.pixels[i]));
+            let neighbours = [(x.wrapping_sub(1), y), (x + 1, y), (x, y.wrapping_sub(1)), (x, y + 1)];
+            isolated += usize::from(
+                neighbours
+                    .iter()
+                    .filter(|&&(nx, ny)| nx < w && ny < h)
+                    .all(|&(nx, ny)| !over[(ny * w + nx) as usize]),
+            );
+            let object = object_at(&id, x, y, scene);
+            if let Some(material) = object.and_then(|o| scene.materials.get(scene.objects[o].material)) {
+                let reflective =
+                    material.reflective.max_element() > 0.0 || material.transparent.max_element() > 0.0;
+                glossy += usize::from(reflective);
+            }
+            if let (Some(camera), Some(_)) = (&camera, object) {
+                let ray = camera.pixel_ray(x, y, w, h);
+                let point = ray.origin + ray.dir.normalize() * depth.get(x, y).x;
+                let n = normal.get(x, y);
+                let lit = scene
+                    .lights
+                    .iter()
+                    .any(|light| light_direction(light, point).is_some_and(|l| n.dot(l) > 0.05));
+                facing_away += usize::from(!lit);
+            }
+        }
+    }
+    let share = |n: usize| n as f64 / total.max(1) as f64;
+    if nan > 0 {
+        format!(
+            "{nan} of your pixels are NaN or infinite: a division by zero or the sqrt of a negative number"
+        )
+    } else if share(facing_away) >= 0.5 {
+        "the shading differs where the surface faces away from every light (N·L ≤ 0): clamp with max(N·L, 0) \
+         in the diffuse and the specular terms"
+            .into()
+    } else if share(glossy) >= 0.5 {
+        "the differences are on reflective or transparent objects: check the mirror and refracted rays \
+         (07 mirror_direction, refract, schlick; 08 trace and its weights)"
+            .into()
+    } else if share(isolated) >= 0.3 && share(darker) >= 0.7 {
+        "speckled dark pixels on lit surfaces: shadow acne. Offset the shadow ray's origin off the surface \
+         (06 offset_origin) and ignore blockers beyond the light"
+            .into()
+    } else if share(darker) >= 0.8 {
+        "your image is darker where it differs: a light missing (or wrongly in shadow), its attenuation or \
+         intensity, or a colour multiplied twice"
+            .into()
+    } else if share(darker) <= 0.2 {
+        "your image is brighter where it differs: a missing shadow, light from behind the surface (max(N·L, 0)), \
+         or the sRGB encoding applied twice"
+            .into()
+    } else {
+        "the shading differs: compare expected.png and yours.png, and print the ray tree of a differing pixel \
+         (grader render SCENE --tree X,Y)"
+            .into()
+    }
+}
+
+#[cfg(feature = "l10")]
+fn luminance(c: Color) -> Float {
+    0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z
+}
+
+/// The unit direction from `point` toward the light (any point of an area light's centre).
+#[cfg(feature = "l10")]
+fn light_direction(light: &raylab::scene::Light, point: Vec3) -> Option<Vec3> {
+    use raylab::scene::LightKind;
+    match light.kind {
+        LightKind::Directional { direction } => Some(-direction.normalize()),
+        LightKind::Point { position, .. } | LightKind::Spot { position, .. } => {
+            (position - point).try_normalize()
+        }
+        LightKind::Rect { corner, edge_u, edge_v, .. } => {
+            (corner + 0.5 * (edge_u + edge_v) - point).try_normalize()
+        }
+        LightKind::Sphere { center, .. } => (center - point).try_normalize(),
+    }
+}
+
+/// The reference's geometry images of `scene` (from the snapshots' own code path: the complete tracer's
+/// intersector), to locate differences of the shaded image.
+#[cfg(feature = "l10")]
+fn geometry_images_reference(scene: &Scene) -> Result<[Image; 3], String> {
+    use crate::tracer::{Aov, render_scene, scene_sampling, scene_settings};
+    let settings = scene_settings(scene);
+    let one = |aov| render_scene(scene, Some(aov), &settings, scene_sampling(scene)).map(|(image, _)| image);
+    Ok([one(Aov::Id)?, one(Aov::Depth)?, one(Aov::Normal)?])
+}
+
+/// The index of the object pixel (x, y) of an id image shows.
+#[cfg(feature = "l10")]
+fn object_at(id: &Image, x: u32, y: u32, scene: &Scene) -> Option<usize> {
+    let pixel = raylab::color::to_srgb8(id.get(x, y));
+    (0..scene.objects.len()).find(|&i| raylab::color::to_srgb8(l02_ray_casting::id_color(Some(i))) == pixel)
+}
+
+/// Writes expected.png, yours.png and diff.png (FLIP's error map, magma
+/// colours) into `dir`, and measures the FLIP error.
+pub fn write_images(dir: &Path, expected: &Image, yours: &Image) -> Result<Images, String> {
+    std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+    let (w, h) = (expected.width, expected.height);
+    let rgb8 = |image: &Image| -> Vec<u8> {
+        image
+            .pixels
+            .iter()
+            .flat_map(|c| if c.is_finite() { raylab::color::to_srgb8(*c) } else { [255, 0, 255] })
+            .collect()
+    };
+    let error = nv_flip::flip(
+        nv_flip::FlipImageRgb8::with_data(w, h, &rgb8(expected)),
+        nv_flip::FlipImageRgb8::with_data(w, h, &rgb8(yours)),
+        nv_flip::DEFAULT_PIXELS_PER_DEGREE,
+    );
+    let values = error.to_vec();
+    let flip_mean = values.iter().map(|&v| v as f64).sum::<f64>() / values.len().max(1) as f64;
+    let flip_fraction_over =
+        values.iter().filter(|&&v| v > FLIP_THRESHOLD).count() as f64 / values.len().max(1) as f64;
+    let magma = error.apply_color_lut(&nv_flip::magma_lut()).to_vec();
+    let diff: Vec<Color> =
+        magma.chunks_exact(3).map(|p| raylab::color::from_srgb8([p[0], p[1], p[2]])).collect();
+    let save = |image: &Image, name: &str| -> Result<String, String> {
+        let path = dir.join(name);
+        image.save_png(&path).map_err(|e| e.to_string())?;
+        Ok(path.to_string_lossy().into_owned())
+    };
+    let showable = Image::from_pixels(
+        w,
+        h,
+        yours.pixels.iter().map(|c| if c.is_finite() { *c } else { Color::new(1.0, 0.0, 1.0) }).collect(),
+    );
+    Ok(Images {
+        expected: save(expected, "expected.png")?,
+        yours: save(&showable, "yours.png")?,
+        diff: save(&Image::from_pixels(w, h, diff), "diff.png")?,
+        flip_mean,
+        flip_fraction_over,
+    })
+}
+
+/// `grader bless`: writes every scene's snapshots (or one lecture's) from
+/// the current code.
+#[cfg(feature = "l10")]
+pub fn bless(only: Option<&str>) -> Result<(), String> {
+    use crate::tracer::{Aov, render_scene, scene_sampling, scene_settings};
+    for file in scene_files(only)? {
+        let scene = raylab::scene::load(&file.scene).map_err(|e| e.to_string())?;
+        let settings = scene_settings(&scene);
+        std::fs::create_dir_all(&file.snapshots).map_err(|e| format!("{}: {e}", file.snapshots.display()))?;
+        let error = |e: raylab::ImageError| e.to_string();
+        let render =
+            |aov| render_scene(&scene, aov, &settings, scene_sampling(&scene)).map(|(image, _)| image);
+        render(None)?.save_png(file.snapshot(".png")).map_err(error)?;
+        render(Some(Aov::Id))?.save_png(file.snapshot(".id.png")).map_err(error)?;
+        render(Some(Aov::Depth))?.save_exr(file.snapshot(".depth.exr")).map_err(error)?;
+        render(Some(Aov::Normal))?.save_exr(file.snapshot(".normal.exr")).map_err(error)?;
+        println!("blessed {}/{}", file.folder, file.name());
+    }
+    Ok(())
+}

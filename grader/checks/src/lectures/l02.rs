@@ -1,0 +1,247 @@
+//! Lecture 02, ray casting: spheres three ways, the plane, the closest hit of a group.
+
+use crate::check::Meta;
+
+const SPHERE_CAUSE: &str =
+    "solve |o + t·d − c|² = r², keep the nearer root inside the range, else the farther one";
+
+pub const CHECKS: &[Meta] = &[
+    Meta::unit(
+        "hit_sphere_algebraic",
+        "the textbook quadratic at ordinary rays: front, inside, miss, behind, tangent",
+    ),
+    Meta::unit("hit_sphere_geometric", "the slides' geometric construction at ordinary rays"),
+    Meta::unit("hit_sphere_stable", "the robust quadratic at ordinary rays"),
+    Meta::extreme(
+        "hit_sphere_stable",
+        "far-small-sphere",
+        "a unit sphere 10⁴ away: t within 16 ulp of the distance, computed in f64 by hand's formula",
+    )
+    .points(2),
+    Meta::unit("hit_plane", "a plane n·p = offset from both sides and a parallel ray"),
+    Meta::unit(
+        "closest_hit",
+        "three spheres in scrambled order: the nearest wins and its index is the object id",
+    )
+    .needs(&["02/hit_sphere_stable"]),
+];
+
+#[cfg(feature = "l02")]
+pub use code::run;
+
+#[cfg(feature = "l02")]
+mod code {
+    use l02_ray_casting::{Group, hit_plane, hit_sphere_algebraic, hit_sphere_geometric, hit_sphere_stable};
+    use raylab::scene::{Object, Shape};
+    use raylab::{Float, Hit, Intersector, Interval, Ray, Vec3};
+
+    use super::SPHERE_CAUSE;
+    use crate::check::{CheckResult, close, close3, ensure, fail, maybe, num, vec3, wide};
+
+    pub fn run(name: &str) -> Option<CheckResult> {
+        Some(match name {
+            "hit_sphere_algebraic/unit" => sphere_cases(hit_sphere_algebraic),
+            "hit_sphere_geometric/unit" => sphere_cases(hit_sphere_geometric),
+            "hit_sphere_stable/unit" => sphere_cases(hit_sphere_stable),
+            "hit_sphere_stable/far-small-sphere" => far_small_sphere(),
+            "hit_plane/unit" => plane_cases(),
+            "closest_hit/unit" => closest_of_three(),
+            _ => return None,
+        })
+    }
+
+    type SphereFn = fn(&Ray, Vec3, Float, Interval) -> Option<Hit>;
+
+    /// Tolerance on t, points and normals of a unit sphere a few units away:
+    /// the three methods round differently, each by a few ulp of 1.
+    const TOL: Float = 64.0 * Float::EPSILON;
+
+    fn ray(o: [Float; 3], d: [Float; 3]) -> Ray {
+        Ray::new(Vec3::from(o), Vec3::from(d))
+    }
+
+    fn show(hit: &Option<Hit>) -> String {
+        maybe(hit, |h| format!("t = {}, normal {}, front_face {}", num(h.t), vec3(h.normal), h.front_face))
+    }
+
+    /// Cases with answers by hand, unit sphere at the origin unless said.
+    fn sphere_cases(hit: SphereFn) -> CheckResult {
+        let all = Interval::new(0.0, Float::INFINITY);
+        let origin = Vec3::ZERO;
+        // From z = 5 straight at the sphere: the near root t = 5 − 1 = 4, at (0, 0, 1), normal +z.
+        let case = "ray from (0, 0, 5) along (0, 0, −1), unit sphere at the origin";
+        let got = hit(&ray([0.0, 0.0, 5.0], [0.0, 0.0, -1.0]), origin, 1.0, all);
+        let Some(h) = got else { return Err(fail(case, "t = 4", show(&got), SPHERE_CAUSE)) };
+        close(case, h.t, 4.0, TOL, "the nearer root is t = (−b − √Δ)/2a")?;
+        close3(case, h.normal, Vec3::Z, TOL, "the outward normal is (p − c)/r")?;
+        ensure(h.front_face, case, "front_face true", "false", "a ray from outside meets the front face")?;
+        // Not a unit direction: t is in units of dir, so |d| = 2 halves it.
+        let case = "ray from (0, 0, 5) along (0, 0, −2): dir is not unit";
+        let got = hit(&ray([0.0, 0.0, 5.0], [0.0, 0.0, -2.0]), origin, 1.0, all);
+        let Some(h) = got else { return Err(fail(case, "t = 2", show(&got), SPHERE_CAUSE)) };
+        close(
+            case,
+            h.t,
+            2.0,
+            TOL,
+            "t must be in units of dir: normalising d without dividing t by |d| gives 4",
+        )?;
+        // From the centre: the only root ahead is t = 1, met from inside.
+        let case = "ray from the centre along (1, 0, 0)";
+        let got = hit(&ray([0.0, 0.0, 0.0], [1.0, 0.0, 0.0]), origin, 1.0, all);
+        let Some(h) = got else { return Err(fail(case, "t = 1", show(&got), SPHERE_CAUSE)) };
+        close(case, h.t, 1.0, TOL, "behind the origin the near root is negative: take the far one")?;
+        close3(
+            case,
+            h.normal,
+            -Vec3::X,
+            TOL,
+            "from inside the normal faces the ray: build the hit with Hit::new(ray, t, p − c)",
+        )?;
+        ensure(!h.front_face, case, "front_face false", "true", "a ray from inside meets the back face")?;
+        // The near root outside the range: the far root t = 6 remains.
+        let case = "ray from (0, 0, 5) along −z, range (4.5, ∞)";
+        let got =
+            hit(&ray([0.0, 0.0, 5.0], [0.0, 0.0, -1.0]), origin, 1.0, Interval::new(4.5, Float::INFINITY));
+        let Some(h) = got else { return Err(fail(case, "t = 6", show(&got), SPHERE_CAUSE)) };
+        close(case, h.t, 6.0, TOL, "when the near root is outside the range, try the far one")?;
+        // Misses: beside the sphere, and pointing away.
+        for (case, r) in [
+            ("ray from (0, 2, 5) along −z passes 2 from the centre", ray([0.0, 2.0, 5.0], [0.0, 0.0, -1.0])),
+            ("ray from (0, 0, 5) along +z points away", ray([0.0, 0.0, 5.0], [0.0, 0.0, 1.0])),
+        ] {
+            let got = hit(&r, origin, 1.0, all);
+            ensure(got.is_none(), case, "None", show(&got), "both roots must be inside the range (t > 0)")?;
+        }
+        // Tangent: Δ = 0 exactly (b = −10, a = 1, c = 25), one hit at t = 5.
+        let case = "ray from (0, 1, 5) along −z grazes the sphere at (0, 1, 0)";
+        let got = hit(&ray([0.0, 1.0, 5.0], [0.0, 0.0, -1.0]), origin, 1.0, all);
+        let Some(h) = got else {
+            return Err(fail(
+                case,
+                "t = 5",
+                show(&got),
+                "a zero discriminant is one (double) root: test Δ < 0, not Δ ≤ 0",
+            ));
+        };
+        close(case, h.t, 5.0, TOL, "the double root is t = −b/2a")?;
+        // Off-centre sphere of radius 2: from (1, 1, 10) along −z, the near root is t = 10 − (−3 + 2) = 11.
+        let case = "sphere r = 2 at (1, 1, −3), ray from (1, 1, 10) along −z";
+        let got = hit(&ray([1.0, 1.0, 10.0], [0.0, 0.0, -1.0]), Vec3::new(1.0, 1.0, -3.0), 2.0, all);
+        let Some(h) = got else { return Err(fail(case, "t = 11", show(&got), SPHERE_CAUSE)) };
+        close(case, h.t, 11.0, 16.0 * TOL, "f = o − c, with c the sphere's centre")?;
+        close3(case, h.normal, Vec3::Z, TOL, "the normal is (p − c)/r: divide by the radius")?;
+        Ok("7 cases".into())
+    }
+
+    /// A unit sphere at distance D = 10⁴ along a generic direction, rays
+    /// from the origin aimed at points inside its silhouette: t against the
+    /// same quadratic solved in f64 (an independent, 2⁻²⁹-accurate answer).
+    fn far_small_sphere() -> CheckResult {
+        let axis = Vec3::new(0.48, -0.6, -0.64); // unit: 0.2304 + 0.36 + 0.4096 = 1
+        let distance: Float = 1.0e4;
+        let center = axis * distance;
+        let side = axis.cross(Vec3::Y).normalize();
+        let up = side.cross(axis);
+        // f32 rounds 10⁴ to steps of ~0.001: 16 ulp of the distance, as issue 5 asks.
+        let ulp = distance * Float::EPSILON;
+        let mut worst: Float = 0.0;
+        for i in 0..64 {
+            let angle = i as Float * 0.1;
+            let target = center + (side * angle.cos() + up * angle.sin()) * (0.7 * (i % 8) as Float / 8.0);
+            let dir = target.normalize();
+            let r = Ray::new(Vec3::ZERO, dir);
+            let case = format!("ray from the origin along {} at a unit sphere 10⁴ away", vec3(dir));
+            let got = hit_sphere_stable(&r, center, 1.0, Interval::new(0.0, Float::INFINITY));
+            let expected = f64_near_root(dir, center);
+            let Some(h) = got else {
+                return Err(fail(
+                    case,
+                    format!("t = {expected:.6}"),
+                    "None",
+                    "a far sphere's discriminant cancels: use the geometric form r² − |f − (f·d̂)d̂|²",
+                ));
+            };
+            let error = (wide(h.t) - expected).abs() as Float;
+            worst = worst.max(error / ulp);
+            close(
+                &case,
+                h.t,
+                expected as Float,
+                16.0 * ulp,
+                "the root nearer zero cancels in −b + √Δ: compute q = −(b + sign(b)√Δ)/2 and t = c/q",
+            )?;
+        }
+        Ok(format!("64 rays, worst |Δt| = {worst:.1} ulp of 10⁴"))
+    }
+
+    /// The near root of the ray (0, dir) against the unit sphere at `center`, in f64.
+    fn f64_near_root(dir: Vec3, center: Vec3) -> f64 {
+        let d = [dir.x, dir.y, dir.z].map(wide);
+        let c = [center.x, center.y, center.z].map(wide);
+        let dd: f64 = d.iter().map(|x| x * x).sum();
+        let dc: f64 = d.iter().zip(&c).map(|(a, b)| a * b).sum();
+        let tca = dc / dd;
+        let closest2: f64 = (0..3).map(|k| (c[k] - tca * d[k]).powi(2)).sum();
+        tca - ((1.0 - closest2) / dd).sqrt()
+    }
+
+    fn plane_cases() -> CheckResult {
+        let all = Interval::new(0.0, Float::INFINITY);
+        let show = |h: &Option<Hit>| maybe(h, |h| format!("t = {}, normal {}", num(h.t), vec3(h.normal)));
+        // The plane y = 1 (n = +y, offset 1): from y = 5 downwards t = 4.
+        let case = "plane y = 1, ray from (0, 5, 0) along (0, −1, 0)";
+        let got = hit_plane(&ray([0.0, 5.0, 0.0], [0.0, -1.0, 0.0]), Vec3::Y, 1.0, all);
+        let Some(h) = got else {
+            return Err(fail(case, "t = 4", show(&got), "t = (offset − n·o)/(n·d)"));
+        };
+        close(case, h.t, 4.0, TOL, "t = (offset − n·o)/(n·d)")?;
+        close3(case, h.normal, Vec3::Y, TOL, "the plane's normal is n")?;
+        // From below: t = 6, the normal faces the ray.
+        let case = "plane y = 1, ray from (0, −5, 0) along (0, 2, 0)";
+        let got = hit_plane(&ray([0.0, -5.0, 0.0], [0.0, 2.0, 0.0]), Vec3::Y, 1.0, all);
+        let Some(h) = got else {
+            return Err(fail(case, "t = 3", show(&got), "t = (offset − n·o)/(n·d)"));
+        };
+        close(case, h.t, 3.0, TOL, "t = (offset − n·o)/(n·d), in units of dir")?;
+        close3(case, h.normal, -Vec3::Y, TOL, "from below the normal faces the ray: Hit::new flips it")?;
+        // Parallel and behind: no hit, and no NaN or infinite t.
+        let case = "plane y = 1, ray from (0, 5, 0) along (1, 0, 0): parallel";
+        let got = hit_plane(&ray([0.0, 5.0, 0.0], [1.0, 0.0, 0.0]), Vec3::Y, 1.0, all);
+        ensure(got.is_none(), case, "None", show(&got), "n·d = 0: the ray is parallel, return None")?;
+        let case = "plane y = 1, ray from (0, 5, 0) along (0, 1, 0): pointing away";
+        let got = hit_plane(&ray([0.0, 5.0, 0.0], [0.0, 1.0, 0.0]), Vec3::Y, 1.0, all);
+        ensure(got.is_none(), case, "None", show(&got), "t < 0 is behind the origin: check the range")?;
+        Ok("4 cases".into())
+    }
+
+    fn closest_of_three() -> CheckResult {
+        let sphere = |z: Float| Object {
+            shape: Shape::Sphere { center: Vec3::new(0.0, 0.0, z), radius: 1.0 },
+            material: 0,
+            transform: None,
+        };
+        // Listed far, near, middle: the nearest (index 1, z = 0) is hit at t = 4.
+        let objects = [sphere(-10.0), sphere(0.0), sphere(-5.0)];
+        let case = "spheres at z = −10, 0, −5 (in that order), ray from (0, 0, 5) along −z";
+        let got = Group::new(&objects)
+            .closest_hit(&ray([0.0, 0.0, 5.0], [0.0, 0.0, -1.0]), Interval::new(0.0, Float::INFINITY));
+        let show = |h: &Option<Hit>| maybe(h, |h| format!("object {} at t = {}", h.object, num(h.t)));
+        let Some(h) = got else {
+            return Err(fail(
+                case,
+                "object 1 at t = 4",
+                show(&got),
+                "test every object and keep the nearest hit",
+            ));
+        };
+        ensure(
+            h.object == 1 && (h.t - 4.0).abs() <= TOL,
+            case,
+            "object 1 at t = 4",
+            show(&got),
+            "keep the nearest hit: shrink the range's max to each hit's t, and set hit.object to the index",
+        )?;
+        Ok("1 case".into())
+    }
+}

@@ -1,0 +1,17 @@
+//! Lecture 04: checks being written.
+
+use crate::check::Meta;
+
+pub const CHECKS: &[Meta] = &[];
+
+#[cfg(feature = "l04")]
+pub use code::run;
+
+#[cfg(feature = "l04")]
+mod code {
+    use crate::check::CheckResult;
+
+    pub fn run(_name: &str) -> Option<CheckResult> {
+        None
+    }
+}

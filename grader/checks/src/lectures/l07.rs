@@ -1,0 +1,858 @@
+//! Lecture 07, reflection and refraction: the mirror ray, Snell's law and total
+//! internal reflection, the two media at a hit, exact Fresnel and Schlick.
+
+use crate::check::Meta;
+
+pub const CHECKS: &[Meta] = &[
+    Meta::unit(
+        "schlick",
+        "R₀ at normal incidence, (1 − cos θ)⁵ from air, cos θ_t from inside glass, R = 1 under TIR",
+    ),
+    Meta::unit(
+        "fresnel_dielectric",
+        "0.04 at normal incidence, the closed form at 45°, Brewster's angle, TIR, and the f64 sine/tangent form",
+    ),
+    Meta::unit("mirror_direction", "mirror rays by hand: 3-4-5, 45°, normal incidence, non-unit directions")
+        .needs(&["05/reflect"]),
+    Meta::unit(
+        "interface",
+        "entering and leaving a sphere: the normal facing the ray and which index is which",
+    ),
+    Meta::unit("refract", "Snell by hand at 30°, normal incidence, η = 1, TIR, and a sweep against f64"),
+    Meta::extreme(
+        "refract",
+        "critical-angle",
+        "θ_c ± 0.001° and normal incidence: finite, None exactly when sin²θ_t ≥ 1, even when it rounds to 1",
+    ),
+    Meta::extreme(
+        "refract",
+        "tiny-glass-sphere",
+        "a glass bead of radius 10⁻⁵: each refracted ray finds the far side and leaves where f64 says",
+    )
+    .needs(&["02/hit_sphere_stable", "07/interface"]),
+];
+
+#[cfg(feature = "l07")]
+pub use code::run;
+
+#[cfg(feature = "l07")]
+// `Failure` is large (its optional images); see check.rs.
+#[allow(clippy::result_large_err)]
+mod code {
+    use l02_ray_casting::hit_sphere_stable;
+    use l07_reflection_refraction::{
+        Interface, fresnel_dielectric, interface, mirror_direction, refract, schlick,
+    };
+    use raylab::{Float, Hit, Interval, Ray, Vec3};
+
+    use crate::check::{CheckResult, close, close3, ensure, fail, maybe, num, vec3};
+
+    pub fn run(name: &str) -> Option<CheckResult> {
+        Some(match name {
+            "schlick/unit" => schlick_cases(schlick),
+            "fresnel_dielectric/unit" => fresnel_cases(fresnel_dielectric),
+            "mirror_direction/unit" => mirror_cases(mirror_direction),
+            "interface/unit" => interface_cases(interface),
+            "refract/unit" => refract_cases(refract),
+            "refract/critical-angle" => critical_angle(refract),
+            "refract/tiny-glass-sphere" => tiny_glass_sphere(refract, interface),
+            _ => return None,
+        })
+    }
+
+    pub(super) type FresnelFn = fn(Float, Float, Float) -> Float;
+    pub(super) type MirrorFn = fn(Vec3, Vec3) -> Vec3;
+    pub(super) type InterfaceFn = fn(&Hit, Float) -> Interface;
+    pub(super) type RefractFn = fn(Vec3, Vec3, Float) -> Option<Vec3>;
+
+    const EPS: Float = Float::EPSILON;
+
+    fn v(x: Float, y: Float, z: Float) -> Vec3 {
+        Vec3::new(x, y, z)
+    }
+
+    /// A `Float` in f64 (the identity in an f64 build).
+    #[allow(clippy::unnecessary_cast)]
+    fn wide(x: Float) -> f64 {
+        x as f64
+    }
+
+    fn wide3(a: Vec3) -> [f64; 3] {
+        [wide(a.x), wide(a.y), wide(a.z)]
+    }
+
+    /// cos of an angle in degrees, computed in f64 and rounded once.
+    fn cos_deg(degrees: f64) -> Float {
+        degrees.to_radians().cos() as Float
+    }
+
+    /// The unit direction meeting the floor y = 0 (normal +y) at `degrees` from
+    /// the normal, travelling toward +x and down; built in f64, rounded once.
+    fn incoming(degrees: f64) -> Vec3 {
+        let theta = degrees.to_radians();
+        v(theta.sin() as Float, -theta.cos() as Float, 0.0)
+    }
+
+    fn show(t: &Option<Vec3>) -> String {
+        maybe(t, |t| vec3(*t)).replace("no hit", "total internal reflection")
+    }
+
+    // ---------------------------------------------------------------- Schlick
+
+    /// Schlick's R = R₀ + (1 − R₀)(1 − cos θ)⁵, with θ on the less dense side.
+    pub(super) fn schlick_cases(schlick: FresnelFn) -> CheckResult {
+        // Normal incidence: R₀ = ((1 − 1.5)/(1 + 1.5))² = 0.2² = 0.04 from either side.
+        // Tolerance 8ε: 0.2 is not a binary fraction; a few roundings of values below 1.
+        for (eta_i, eta_t) in [(1.0, 1.5), (1.5, 1.0)] {
+            let case = format!("cos θ_i = 1 (normal incidence), η_i = {eta_i}, η_t = {eta_t}");
+            let r = schlick(1.0, eta_i, eta_t);
+            let cause = if (r.abs() - 0.2).abs() < 1e-3 {
+                "R₀ is the square of the amplitude: ((η_i − η_t)/(η_i + η_t))²"
+            } else {
+                "at normal incidence 1 − cos θ = 0, so R = R₀ = ((η_i − η_t)/(η_i + η_t))²"
+            };
+            close(case, r, 0.04, 8.0 * EPS, cause)?;
+        }
+        // From air at 60°: cos θ = ½ exactly, R = 0.04 + 0.96·(½)⁵ = 0.04 + 0.03 = 0.07.
+        // A fourth power would give 0.04 + 0.96/16 = 0.1. Tolerance 8ε as above.
+        let case = "air to glass (η_i = 1, η_t = 1.5) at 60°: cos θ_i = 0.5";
+        let r = schlick(0.5, 1.0, 1.5);
+        let cause = if (r - 0.1).abs() < 1e-3 {
+            "the power is the fifth: (1 − cos θ)⁵"
+        } else {
+            "from the less dense side R = R₀ + (1 − R₀)(1 − cos θ_i)⁵"
+        };
+        close(case, r, 0.07, 8.0 * EPS, cause)?;
+        // Grazing from air: R₀ + (1 − R₀)·1 = 1, up to one rounding of 1 − R₀.
+        let case = "air to glass at grazing incidence: cos θ_i = 0";
+        close(case, schlick(0.0, 1.0, 1.5), 1.0, 2.0 * EPS, "at grazing incidence (1 − 0)⁵ = 1, so R = 1")?;
+        // Inside glass at 30° and 0.001° below the critical angle: θ on the air side, by
+        // Snell cos θ_t = √(1 − 1.5²·sin²θ_i), computed here in f64.
+        for (degrees, tolerance, why) in [
+            // At 30°: cos θ_t = √(1 − 2.25·0.25) = 0.661438, R = 0.0442703. The cosine is
+            // rounded once and dR/dcos θ ≈ −0.06 there: 64ε covers it and a few roundings.
+            (30.0, 64.0 * EPS, "30°"),
+            // 0.001° below θ_c = 41.8103149°: cos θ_t ≈ 6.2·10⁻³, R ≈ 0.9704. cos θ_t is
+            // good only to ~1 % in f32 (1 − sin²θ_t cancels), and dR/dcos θ ≈ −4.7: 10⁻³.
+            (41.810_314_9 - 0.001, 1e-3, "0.001° below the critical angle"),
+        ] {
+            let cos_i = cos_deg(degrees);
+            let sin2_t = 2.25 * (1.0 - wide(cos_i) * wide(cos_i));
+            let cos_t = (1.0 - sin2_t).sqrt();
+            let expected = 0.04 + 0.96 * (1.0 - cos_t).powi(5);
+            let with_cos_i = 0.04 + 0.96 * (1.0 - wide(cos_i)).powi(5);
+            let case = format!("glass to air (η_i = 1.5, η_t = 1) at {why}: cos θ_i = {}", num(cos_i));
+            let r = schlick(cos_i, 1.5, 1.0);
+            let cause = if r.is_nan() {
+                "inside glass take cos θ_t = √(1 − sin²θ_t) only when sin²θ_t < 1"
+            } else if (wide(r) - with_cos_i).abs() < 1e-4 {
+                "leaving the denser medium (η_i > η_t) use the angle on the air side: cos θ_t from Snell's law, not cos θ_i"
+            } else {
+                "inside glass R = R₀ + (1 − R₀)(1 − cos θ_t)⁵ with cos²θ_t = 1 − (η_i/η_t)²(1 − cos²θ_i)"
+            };
+            close(case, r, expected as Float, tolerance, cause)?;
+        }
+        // Past the critical angle: 60° and grazing from inside glass, sin²θ_t ≥ 1: R = 1.
+        for cos_i in [0.5, 0.0] {
+            let case = format!("glass to air at cos θ_i = {cos_i}: past the critical angle");
+            let r = schlick(cos_i, 1.5, 1.0);
+            close(case, r, 1.0, 0.0, "total internal reflection (sin²θ_t ≥ 1) reflects everything: R = 1")?;
+        }
+        Ok("8 cases".into())
+    }
+
+    // ----------------------------------------------------------------- Fresnel
+
+    /// The exact reflectance in f64 from the angle, by the sine/tangent form of the
+    /// Fresnel equations (a different formula from the cosine form the exercise uses):
+    /// r_s = −sin(θ_i − θ_t)/sin(θ_i + θ_t), r_p = tan(θ_i − θ_t)/tan(θ_i + θ_t).
+    /// Only for 0 < θ_i < 90°, below the critical angle.
+    fn fresnel_by_angles(degrees: f64, eta_i: f64, eta_t: f64) -> f64 {
+        let theta_i = degrees.to_radians();
+        let theta_t = (eta_i / eta_t * theta_i.sin()).asin();
+        let r_s = -(theta_i - theta_t).sin() / (theta_i + theta_t).sin();
+        let r_p = (theta_i - theta_t).tan() / (theta_i + theta_t).tan();
+        0.5 * (r_s * r_s + r_p * r_p)
+    }
+
+    pub(super) fn fresnel_cases(fresnel: FresnelFn) -> CheckResult {
+        // Normal incidence: r_s = −r_p = (1 − 1.5)/2.5 = −0.2, R = ½(0.04 + 0.04) = 0.04.
+        for (eta_i, eta_t) in [(1.0, 1.5), (1.5, 1.0)] {
+            let case = format!("cos θ_i = 1 (normal incidence), η_i = {eta_i}, η_t = {eta_t}");
+            let r = fresnel(1.0, eta_i, eta_t);
+            let cause = if (r - 0.08).abs() < 1e-3 {
+                "unpolarised light is the mean of the two polarisations: R = ½(r_s² + r_p²)"
+            } else {
+                "R = ½(r_s² + r_p²), each r the ratio of amplitudes"
+            };
+            close(case, r, 0.04, 8.0 * EPS, cause)?;
+        }
+        // Air to glass at 45°, by hand: cos θ_i = √2/2, sin θ_t = √2/3, cos θ_t = √7/3, so
+        // r_s = (√2 − √7)/(√2 + √7) = −0.3033370, r_p = (9√2 − 4√7)/(9√2 + 4√7) = 0.0920134,
+        // R = 0.0502399. Tolerance 32ε: cos θ_i rounded once, a dozen roundings below 1.
+        let (s2, s7) = (2f64.sqrt(), 7f64.sqrt());
+        let (r_s, r_p) = ((s2 - s7) / (s2 + s7), (9.0 * s2 - 4.0 * s7) / (9.0 * s2 + 4.0 * s7));
+        let expected = 0.5 * (r_s * r_s + r_p * r_p);
+        let case = "air to glass (η_i = 1, η_t = 1.5) at 45°: cos θ_i = √2/2";
+        let r = fresnel((0.5 as Float).sqrt(), 1.0, 1.5);
+        let cause = if (r - 1.0).abs() < 1e-3 {
+            "this is no total internal reflection: sin²θ_t = (η_i/η_t)²(1 − cos²θ_i) with η_i/η_t = 1/1.5"
+        } else if (wide(r) - r_s * r_s).abs() < 1e-4 {
+            "r_p = (η_t cos θ_i − η_i cos θ_t)/(η_t cos θ_i + η_i cos θ_t): the indices trade places against r_s"
+        } else if (wide(r) - 2.0 * expected).abs() < 1e-4 {
+            "unpolarised light is the mean of the two polarisations: R = ½(r_s² + r_p²)"
+        } else {
+            "r_s = (η_i cos θ_i − η_t cos θ_t)/(η_i cos θ_i + η_t cos θ_t), r_p with η_i and η_t swapped"
+        };
+        close(case, r, expected as Float, 32.0 * EPS, cause)?;
+        // Brewster's angle tan θ_B = η_t/η_i: r_p = 0, r_s = ∓(η_t² − η_i²)/(η_t² + η_i²) = ∓5/13
+        // for 1 and 1.5, so R = r_s²/2 = 25/338 from either side. Tolerance 32ε as above.
+        for (eta_i, eta_t) in [(1.0f64, 1.5f64), (1.5, 1.0)] {
+            let cos_b = 1.0 / (1.0 + (eta_t / eta_i).powi(2)).sqrt();
+            let case = format!("η_i = {eta_i}, η_t = {eta_t} at Brewster's angle: cos θ_i = {cos_b:.6}");
+            let r = fresnel(cos_b as Float, eta_i as Float, eta_t as Float);
+            let cause = "at Brewster's angle r_p = 0 and R = r_s²/2: check r_p = (η_t cos θ_i − η_i cos θ_t)/(η_t cos θ_i + η_i cos θ_t)";
+            close(case, r, (25.0 / 338.0) as Float, 32.0 * EPS, cause)?;
+        }
+        // Grazing from air: r_s = r_p = −1, R = 1; past the critical angle from glass: R = 1.
+        let case = "air to glass at grazing incidence: cos θ_i = 0";
+        close(case, fresnel(0.0, 1.0, 1.5), 1.0, 4.0 * EPS, "at grazing incidence r_s = r_p = −1: R = 1")?;
+        for cos_i in [0.5, 0.0] {
+            let case = format!("glass to air at cos θ_i = {cos_i}: past the critical angle");
+            let r = fresnel(cos_i, 1.5, 1.0);
+            close(
+                case,
+                r,
+                1.0,
+                0.0,
+                "when sin²θ_t ≥ 1 (total internal reflection) return R = 1 before the square root",
+            )?;
+        }
+        // A sweep against the sine/tangent form in f64: four pairs of media, 0.5° to 89.5°,
+        // stopping 1° short of the critical angle. Tolerance 64ε: cos θ_i rounded once,
+        // and near θ_c, √(1 − sin²θ_t) amplifies the rounding of sin²θ_t.
+        let mut count = 0;
+        for (eta_i, eta_t) in [(1.0f64, 1.5f64), (1.5, 1.0), (1.0, 2.4), (1.0, 1.1)] {
+            let critical = if eta_i > eta_t { (eta_t / eta_i).asin().to_degrees() } else { 90.0 };
+            for tenths in (5..=895).step_by(10) {
+                let degrees = f64::from(tenths) / 10.0;
+                if degrees > critical - 1.0 {
+                    break;
+                }
+                let expected = fresnel_by_angles(degrees, eta_i, eta_t);
+                let case = format!("η_i = {eta_i}, η_t = {eta_t} at {degrees}°");
+                let r = fresnel(cos_deg(degrees), eta_i as Float, eta_t as Float);
+                let cause = "R = ½(r_s² + r_p²) with cos θ_t = √(1 − (η_i/η_t)²(1 − cos²θ_i))";
+                close(case, r, expected as Float, 64.0 * EPS, cause)?;
+                count += 1;
+            }
+        }
+        Ok(format!("{} cases", count + 7))
+    }
+
+    // ------------------------------------------------------------------ mirror
+
+    pub(super) fn mirror_cases(mirror: MirrorFn) -> CheckResult {
+        let s = (0.5 as Float).sqrt();
+        // By hand r = d − 2(d·n)n: the tangential part kept, the normal part flipped.
+        // The 3-4-5 case is exact (d·n = −0.8, −0.8 + 1.6 rounds to 0.8); at 45°, a few
+        // roundings of √½: 2ε; a tilted normal (2, −1, 2)/3 rounded: 4ε; the scaled case is
+        // exact (powers of two).
+        let n_tilted = v(2.0, -1.0, 2.0) / 3.0;
+        let cases = [
+            ("d = (0.6, −0.8, 0) onto the floor n = +y", v(0.6, -0.8, 0.0), Vec3::Y, v(0.6, 0.8, 0.0), 0.0),
+            ("d = (−1, 0, −1)/√2 onto the wall n = +x", v(-s, 0.0, -s), Vec3::X, v(s, 0.0, -s), 2.0 * EPS),
+            ("d = −n at normal incidence, n = (2, −1, 2)/3", -n_tilted, n_tilted, n_tilted, 4.0 * EPS),
+            (
+                "d = (24, −32, 0) (not unit) onto the floor",
+                v(24.0, -32.0, 0.0),
+                Vec3::Y,
+                v(24.0, 32.0, 0.0),
+                0.0,
+            ),
+            ("d = (1, 0, −3) along the floor (grazing)", v(1.0, 0.0, -3.0), Vec3::Y, v(1.0, 0.0, -3.0), 0.0),
+        ];
+        for (case, d, n, expected, tolerance) in cases {
+            let r = mirror(d, n);
+            let cause = if (r + expected).abs().max_element() <= tolerance + 4.0 * EPS
+                && expected.dot(n) != 0.0
+            {
+                "the incoming direction goes in as it is, toward the surface: r = reflect(dir, n), leaving on the normal's side"
+            } else if d.length() != 1.0 && (r - expected.normalize()).abs().max_element() <= 1e-4 {
+                "keep |r| = |dir|: do not normalise (t along the mirror ray stays in the units of dir)"
+            } else {
+                "r = dir − 2(dir·n)n: call 05's reflect(dir, n), the one mirror formula of the course"
+            };
+            close3(case, r, expected, tolerance, cause)?;
+        }
+        Ok("5 cases".into())
+    }
+
+    // --------------------------------------------------------------- interface
+
+    pub(super) fn interface_cases(interface: InterfaceFn) -> CheckResult {
+        let show = |s: &Interface| {
+            format!(
+                "normal {}, η_i = {}, η_t = {}, entering {}",
+                vec3(s.normal),
+                num(s.eta_i),
+                num(s.eta_t),
+                s.entering
+            )
+        };
+        for ior in [1.5, 2.4] {
+            // From (0, 0, 5) down −z onto the sphere's top (0, 0, 1), outward normal +z: entering.
+            let ray = Ray::new(v(0.0, 0.0, 5.0), -Vec3::Z);
+            let hit = Hit::new(&ray, 4.0, Vec3::Z);
+            let expected = Interface { normal: Vec3::Z, eta_i: 1.0, eta_t: ior, entering: true };
+            let case = format!("ray from (0, 0, 5) along −z, outside a sphere of ior {ior}, front face");
+            let got = interface(&hit, ior);
+            check_interface(&case, &got, &expected, show)?;
+            // From the centre out along +z: the same point from inside, so the hit's normal is −z.
+            let ray = Ray::new(Vec3::ZERO, Vec3::Z);
+            let hit = Hit::new(&ray, 1.0, Vec3::Z);
+            let expected = Interface { normal: -Vec3::Z, eta_i: ior, eta_t: 1.0, entering: false };
+            let case = format!("ray from the centre along +z, inside a sphere of ior {ior}, back face");
+            let got = interface(&hit, ior);
+            check_interface(&case, &got, &expected, show)?;
+        }
+        Ok("4 cases".into())
+    }
+
+    fn check_interface(
+        case: &str,
+        got: &Interface,
+        expected: &Interface,
+        show: impl Fn(&Interface) -> String,
+    ) -> Result<(), crate::check::Failure> {
+        let cause = if got.normal != expected.normal {
+            if got.normal == -expected.normal {
+                "use hit.normal, which already faces the ray: the outward normal points the wrong way for a ray leaving"
+            } else {
+                "the interface's normal is hit.normal as it is"
+            }
+        } else if got.eta_i == expected.eta_t && got.eta_t == expected.eta_i {
+            "from outside (front face) η_i = 1 (vacuum) and η_t = ior; from inside the two swap"
+        } else if got.entering != expected.entering {
+            "entering is hit.front_face: a ray arriving at the front face goes into the object"
+        } else {
+            "η_i is the index on the ray's side, η_t on the other: 1 outside, ior inside"
+        };
+        ensure(got == expected, case, show(expected), show(got), cause)
+    }
+
+    // ----------------------------------------------------------------- refract
+
+    /// t = η i + (η cos θ_i − cos θ_t) n by hand and Snell's law against f64.
+    pub(super) fn refract_cases(refract: RefractFn) -> CheckResult {
+        // Air to glass at 30°: i = (½, −√3/2, 0), η = 1/1.5: sin θ_t = ½/1.5 = ⅓,
+        // cos θ_t = √(1 − 1/9) = 2√2/3, so t = (1/3, −2√2/3, 0). Tolerance 8ε: √3/2 rounded,
+        // then about six roundings of values ≤ 1.
+        let case = "i = (0.5, −0.8660, 0) onto n = +y (30°), η = 1/1.5 (air to glass)";
+        let i = v(0.5, -(3.0 as Float).sqrt() / 2.0, 0.0);
+        let expected = v(1.0 / 3.0, -(8.0 as Float).sqrt() / 3.0, 0.0);
+        let got = refract(i, Vec3::Y, 1.0 / 1.5);
+        let Some(t) = got else {
+            return Err(fail(
+                case,
+                vec3(expected),
+                show(&got),
+                "into a denser medium (η < 1) there is no total internal reflection: TIR only when sin²θ_t = η²(1 − cos²θ_i) ≥ 1",
+            ));
+        };
+        let cause = if (t.x - 0.75).abs() < 1e-3 {
+            "eta_ratio is already η_i/η_t (here 1/1.5): use it as given, do not invert it"
+        } else if !t.is_finite() {
+            "clamp cos θ_i = −i·n to [0, 1] and take the square root only when sin²θ_t < 1"
+        } else if (t.length() - 1.0).abs() > 1e-3 {
+            "cos θ_i = −i·n (i points toward the surface, n against it), so that |t| = 1"
+        } else if t.y > 0.0 {
+            "the transmitted ray goes through the surface: its normal part is −cos θ_t·n"
+        } else {
+            "t = η·i + (η·cos θ_i − cos θ_t)·n with cos θ_i = −i·n"
+        };
+        close3(case, t, expected, 8.0 * EPS, cause)?;
+        // Normal incidence: cos θ_i = 1, cos θ_t = 1, t = ηi + (η − 1)n = −n for every η.
+        // Tolerance 8ε: the tilted normal is rounded, and ηi + (η − 1)n rounds a few times.
+        for n in [Vec3::Y, v(1.0, 2.0, -2.0) / 3.0] {
+            for eta in [1.0 / 1.5, 1.5, 2.4] {
+                let case = format!("i = −n at normal incidence, n = {}, η = {}", vec3(n), num(eta));
+                let got = refract(-n, n, eta);
+                let t = got.unwrap_or(Vec3::NAN);
+                close3(case, t, -n, 8.0 * EPS, "at normal incidence the ray goes straight through: t = −n")?;
+            }
+        }
+        // η = 1: no bending, t = i. Tolerance 8ε + ε/cos θ_i: √(1 − (1 − cos²θ_i)) cancels.
+        for degrees in [10.0, 45.0, 80.0] {
+            let i = incoming(degrees);
+            let case = format!("i at {degrees}° onto n = +y, η = 1 (the same medium on both sides)");
+            let t = refract(i, Vec3::Y, 1.0).unwrap_or(Vec3::NAN);
+            let tolerance = 8.0 * EPS + EPS / cos_deg(degrees);
+            close3(case, t, i, tolerance, "with η = 1, sin θ_t = sin θ_i and t = i")?;
+        }
+        // Glass to air at 45°: sin²θ_t = 2.25·½ = 1.125 ≥ 1, total internal reflection.
+        let case = "i at 45° onto n = +y, η = 1.5 (glass to air), sin²θ_t = 1.125";
+        let got = refract(incoming(45.0), Vec3::Y, 1.5);
+        ensure(
+            got.is_none(),
+            case,
+            "None (total internal reflection)",
+            show(&got),
+            "past the critical angle (sin²θ_t = η²(1 − cos²θ_i) ≥ 1) there is no transmitted ray: return None",
+        )?;
+        // A sweep: |t| = 1 (4ε), t in the plane of i and n, through the surface, and Snell's
+        // η sin θ_i = sin θ_t checked in f64 (16ε); None exactly when η² sin²θ_i > 1 in f64
+        // (cases within 10⁻⁴ of 1 left to the critical-angle check).
+        let mut count = 0;
+        for eta in [1.0 / 2.4, 1.0 / 1.5, 1.1, 1.5, 2.4] {
+            for degrees in (0..=89).map(f64::from) {
+                let i = incoming(degrees);
+                let [ix, iy, _] = wide3(i);
+                let sin_i = ix.abs() / ix.hypot(iy);
+                let sin2_t = (wide(eta) * sin_i).powi(2);
+                if (sin2_t - 1.0).abs() < 1e-4 {
+                    continue;
+                }
+                count += 1;
+                let case = format!("i at {degrees}° onto n = +y, η = {}", num(eta));
+                let got = refract(i, Vec3::Y, eta);
+                let Some(t) = got else {
+                    ensure(sin2_t > 1.0, &case, "a transmitted ray", "None", "None only when sin²θ_t ≥ 1")?;
+                    continue;
+                };
+                ensure(
+                    sin2_t < 1.0,
+                    &case,
+                    "None (total internal reflection)",
+                    vec3(t),
+                    "past the critical angle (sin²θ_t ≥ 1) return None",
+                )?;
+                let [tx, ty, tz] = wide3(t);
+                let unit = (t.length() - 1.0).abs() <= 4.0 * EPS;
+                let through = tz == 0.0 && ty < 0.0;
+                let snell = (tx.abs() / tx.hypot(ty) - wide(eta) * sin_i).abs() <= 16.0 * wide(EPS);
+                ensure(
+                    unit && through && snell,
+                    &case,
+                    format!("unit, through the surface, sin θ_t = {:.6}", wide(eta) * sin_i),
+                    format!("{}, |t| = {}", vec3(t), num(t.length())),
+                    "t = η·i + (η·cos θ_i − cos θ_t)·n, cos θ_t = √(1 − η²(1 − cos²θ_i))",
+                )?;
+            }
+        }
+        Ok(format!("{} cases", count + 11))
+    }
+
+    /// The extremes of refraction: the critical angle ± 0.001°, sin²θ_t rounding to
+    /// exactly 1, normal incidence, and i·n rounded past 0 or −1.
+    pub(super) fn critical_angle(refract: RefractFn) -> CheckResult {
+        // Glass to air, η = 1.5: θ_c = arcsin(1/1.5) = 41.8103149°. 0.001° below it the
+        // expected cos θ_t = √(1 − η² sin²θ_i) is computed in f64 from the rounded i:
+        // about 6.2·10⁻³, a ray leaving nearly along the surface. Tolerance 2 % of it: in
+        // f32, 1 − sin²θ_t ≈ 3.9·10⁻⁵ carries an absolute error of a few ε, 1 % of it.
+        let critical = (1.0 / 1.5f64).asin().to_degrees();
+        let i = incoming(critical - 0.001);
+        let case = "glass to air (η = 1.5) at 0.001° below the critical angle 41.8103°";
+        let [ix, iy, _] = wide3(i);
+        let sin2_t = 2.25 * ix * ix / (ix * ix + iy * iy);
+        let expected_cos_t = (1.0 - sin2_t).sqrt();
+        let got = refract(i, Vec3::Y, 1.5);
+        let Some(t) = got else {
+            return Err(fail(
+                case,
+                format!("a ray with cos θ_t = {expected_cos_t:.4e}"),
+                show(&got),
+                "just below θ_c, sin²θ_t < 1: only sin²θ_t ≥ 1 is total internal reflection",
+            ));
+        };
+        close(
+            case,
+            -t.y,
+            expected_cos_t as Float,
+            0.02 * expected_cos_t as Float,
+            "cos θ_t = √(1 − η²(1 − cos²θ_i)), the normal part of t is −cos θ_t·n",
+        )?;
+        close(case, t.length(), 1.0, 4.0 * EPS, "t = η·i + (η·cos θ_i − cos θ_t)·n is unit")?;
+        // 0.001° above: sin²θ_t ≈ 1 + 3.9·10⁻⁵, total internal reflection; also at grazing.
+        for (case, i) in [
+            ("glass to air at 0.001° above the critical angle", incoming(critical + 0.001)),
+            ("glass to air at grazing incidence (90°)", incoming(90.0)),
+        ] {
+            let got = refract(i, Vec3::Y, 1.5);
+            ensure(
+                got.is_none(),
+                case,
+                "None (total internal reflection)",
+                show(&got),
+                "past the critical angle (sin²θ_t ≥ 1) there is no transmitted ray: return None",
+            )?;
+        }
+        // sin²θ_t = (η·η)(1 − cos θ_i·cos θ_i) rounding to exactly 1: cos θ_i = k/64 (so
+        // 1 − cos²θ_i is exact) and η among the floats nearest 1/sin θ_i. Exactly 1 is
+        // θ_t = 90°: None. The product is evaluated here as the contract states it.
+        let mut exact_ones = 0;
+        for k in 1..64 {
+            let cos_i = k as Float / 64.0;
+            let sin2_i = 1.0 - cos_i * cos_i;
+            let i = v(sin2_i.sqrt(), -cos_i, 0.0);
+            let nearest = 1.0 / sin2_i.sqrt();
+            for step in -8i64..=8 {
+                let eta = Float::from_bits((nearest.to_bits() as i64 + step) as _);
+                if eta * eta * sin2_i != 1.0 {
+                    continue;
+                }
+                exact_ones += 1;
+                let case =
+                    format!("cos θ_i = {k}/64, η = {eta:e}: sin²θ_t = (η·η)(1 − cos²θ_i) is exactly 1");
+                let got = refract(i, Vec3::Y, eta);
+                ensure(
+                    got.is_none(),
+                    case,
+                    "None (θ_t = 90°)",
+                    show(&got),
+                    "sin²θ_t = 1 means θ_t = 90°, no transmitted ray: test sin²θ_t ≥ 1, not > 1",
+                )?;
+            }
+        }
+        // Normal incidence for η from 1/2.4 to 2.4: t = −n, finite. Tolerance 8ε as in the unit check.
+        for eta in [1.0 / 2.4, 1.0 / 1.5, 1.0, 1.5, 2.4] {
+            let n = v(2.0, -3.0, 6.0) / 7.0;
+            let case = format!("i = −n at normal incidence, n = (2, −3, 6)/7, η = {}", num(eta));
+            let t = refract(-n, n, eta).unwrap_or(Vec3::NAN);
+            close3(case, t, -n, 8.0 * EPS, "at normal incidence t = −n, for every η")?;
+        }
+        // i·n rounded a little above 0 (grazing) or below −1 (normal): finite and unit, or None.
+        let grazing = v(1.0, 4.0 * EPS, 0.0).normalize();
+        let straight = -Vec3::Y * (1.0 + 2.0 * EPS);
+        for (what, i) in
+            [("i·n > 0 by rounding (grazing)", grazing), ("i·n < −1 by rounding (normal)", straight)]
+        {
+            for eta in [1.0 / 1.5, 1.0, 1.5] {
+                let case = format!("i = {} onto n = +y, {what}, η = {}", vec3(i), num(eta));
+                if let Some(t) = refract(i, Vec3::Y, eta) {
+                    ensure(
+                        t.is_finite() && (t.length() - 1.0).abs() <= 8.0 * EPS,
+                        case,
+                        "a finite unit t, or None",
+                        vec3(t),
+                        "clamp cos θ_i = −i·n to [0, 1] first: rounding takes it past the ends",
+                    )?;
+                }
+            }
+        }
+        Ok(format!("critical angle ± 0.001°, {exact_ones} cases of sin²θ_t = 1 exactly, normal and grazing"))
+    }
+
+    /// The offset of lecture 06 (`offset_origin`), restated here so that this
+    /// lecture's check needs no later lecture: p moved along ±n (the side `dir`
+    /// leaves to) by 8ε(|p|₁ + |from|₁) + the smallest normal float.
+    fn offset(p: Vec3, n: Vec3, dir: Vec3, from: Vec3) -> Vec3 {
+        let d = 8.0 * EPS * (p.abs().element_sum() + from.abs().element_sum()) + Float::MIN_POSITIVE;
+        if dir.dot(n) < 0.0 { p - d * n } else { p + d * n }
+    }
+
+    /// Through a glass sphere in f64: the entry point, the exit point and the
+    /// direction out, for the ray (o, d) (d unit) that hits it.
+    fn through_sphere_f64(
+        o: [f64; 3],
+        d: [f64; 3],
+        c: [f64; 3],
+        r: f64,
+        eta: f64,
+    ) -> ([f64; 3], [f64; 3], [f64; 3]) {
+        let dot = |a: [f64; 3], b: [f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+        let at = |o: [f64; 3], d: [f64; 3], t: f64| [o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2]];
+        let sub = |a: [f64; 3], b: [f64; 3]| [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
+        let scale = |a: [f64; 3], s: f64| [a[0] * s, a[1] * s, a[2] * s];
+        let add = |a: [f64; 3], b: [f64; 3]| [a[0] + b[0], a[1] + b[1], a[2] + b[2]];
+        // Snell in vector form with n facing the ray and η = η_i/η_t.
+        let bend = |i: [f64; 3], n: [f64; 3], eta: f64| {
+            let cos_i = -dot(i, n);
+            let cos_t = (1.0 - eta * eta * (1.0 - cos_i * cos_i)).sqrt();
+            add(scale(i, eta), scale(n, eta * cos_i - cos_t))
+        };
+        // Entry: the near root of |o + t·d − c|² = r², geometrically (f = o − c).
+        let f = sub(o, c);
+        let tca = -dot(f, d);
+        let off = sub(f, scale(d, -tca));
+        let half_chord = (r * r - dot(off, off)).sqrt();
+        let entry = at(o, d, tca - half_chord);
+        let n1 = scale(sub(entry, c), 1.0 / r);
+        let inside = bend(d, n1, 1.0 / eta);
+        // Exit: the chord from the entry along `inside` has length −2(inside·n1)·r.
+        let exit = at(entry, inside, -2.0 * dot(inside, n1) * r);
+        let n2 = scale(sub(c, exit), 1.0 / r); // facing the ray from inside
+        (entry, exit, bend(inside, n2, eta))
+    }
+
+    /// A glass bead of radius 10⁻⁵ at 0.1 from the eye: for rays over its disc, entry by
+    /// 02's sphere, `interface` and `refract`, a start just inside (06's offset, restated),
+    /// the exit by 02's sphere again, `interface` and `refract` out. The exit point and
+    /// the direction out are compared with the same path traced in f64.
+    pub(super) fn tiny_glass_sphere(refract: RefractFn, interface: InterfaceFn) -> CheckResult {
+        let r: Float = 1e-5;
+        let center = v(0.0, 0.0, -0.1);
+        let eye = Vec3::ZERO;
+        let all = Interval::new(0.0, Float::INFINITY);
+        // Error budget in f32: the hit points carry a few ulp of 0.1 (ulp = 7.5·10⁻⁹), i.e.
+        // ~0.3 % of r; the normals (p − c)/r inherit that as ~3·10⁻³ rad, and two refractions
+        // and a chord of ≤ 2r carry it to the exit: a few 10⁻³ r and 10⁻² rad at worst.
+        // Tolerances: the exit within 0.05·r, the direction out within 0.03 (component-wise).
+        let point_tolerance = 0.05 * r;
+        let direction_tolerance: Float = 0.03;
+        let (mut worst_point, mut worst_dir): (Float, Float) = (0.0, 0.0);
+        let rays = 48;
+        for k in 0..rays {
+            // Aim at points of the bead's disc out to 0.9 r, around it.
+            let angle = k as Float * 0.7;
+            let reach = 0.9 * r * ((k % 8) as Float + 0.5) / 8.0;
+            let aim = center + v(angle.cos(), angle.sin(), 0.0) * reach;
+            let d = (aim - eye).normalize();
+            let ray = Ray::new(eye, d);
+            let case = format!(
+                "ray from the origin along {} into a glass bead r = 10⁻⁵ at (0, 0, −0.1), ior 1.5",
+                vec3(d)
+            );
+            let Some(entry) = hit_sphere_stable(&ray, center, r, all) else {
+                return Err(fail(
+                    case,
+                    "a hit",
+                    "None",
+                    "02's hit_sphere_stable misses a small sphere: run 02's checks",
+                ));
+            };
+            let into = interface(&entry, 1.5);
+            let Some(inside) = refract(d, into.normal, into.eta_ratio()) else {
+                return Err(fail(
+                    case,
+                    "a refracted ray into the glass",
+                    "None (total internal reflection)",
+                    "entering glass from air never reflects totally: η = η_i/η_t = 1/1.5",
+                ));
+            };
+            ensure(
+                inside.dot(entry.normal) < 0.0,
+                &case,
+                "a refracted ray going into the bead (t·n < 0)",
+                vec3(inside),
+                "the transmitted ray goes through the surface: t = η·i + (η·cos θ_i − cos θ_t)·n",
+            )?;
+            let start = offset(entry.point, entry.normal, inside, eye);
+            let second = Ray::new(start, inside);
+            let found = hit_sphere_stable(&second, center, r, all);
+            let show_hit =
+                |h: &Option<Hit>| maybe(h, |h| format!("t = {:e}, front_face {}", h.t, h.front_face));
+            let Some(exit) = found.filter(|h| !h.front_face && h.t > 0.1 * r) else {
+                return Err(fail(
+                    case,
+                    "the far side of the bead, from inside",
+                    show_hit(&found),
+                    "the refracted ray must go into the bead, away from the entry: refract with the normal facing the ray",
+                ));
+            };
+            let out_of = interface(&exit, 1.5);
+            let Some(out) = refract(inside, out_of.normal, out_of.eta_ratio()) else {
+                return Err(fail(
+                    case,
+                    "a ray out of the bead (the path reversed is no TIR)",
+                    "None (total internal reflection)",
+                    "leaving glass, η = ior/1 and the normal is hit.normal, facing the ray from inside",
+                ));
+            };
+            let (_, exit_f64, out_f64) =
+                through_sphere_f64(wide3(eye), wide3(d), wide3(center), wide(r), 1.5);
+            let exit_expected = v(exit_f64[0] as Float, exit_f64[1] as Float, exit_f64[2] as Float);
+            let out_expected = v(out_f64[0] as Float, out_f64[1] as Float, out_f64[2] as Float);
+            worst_point = worst_point.max((exit.point - exit_expected).abs().max_element() / r);
+            worst_dir = worst_dir.max((out - out_expected).abs().max_element());
+            close3(
+                &case,
+                exit.point,
+                exit_expected,
+                point_tolerance,
+                "the exit: refract with interface(hit, ior) at the entry (η = 1/1.5) and the far side found from just inside",
+            )?;
+            close3(
+                &case,
+                out,
+                out_expected,
+                direction_tolerance,
+                "leaving the bead η = 1.5/1 with hit.normal facing the ray from inside: interface() swaps the indices",
+            )?;
+        }
+        Ok(format!("{rays} rays, exit within {worst_point:.1e} r, direction within {worst_dir:.1e}"))
+    }
+}
+
+#[cfg(all(test, feature = "l07"))]
+#[allow(clippy::result_large_err)]
+mod tests {
+    use super::CHECKS;
+    use super::code::*;
+    use l07_reflection_refraction::{Interface, interface, refract};
+    use raylab::{Float, Hit, Vec3};
+
+    #[test]
+    fn every_declared_check_passes_on_the_reference() {
+        for meta in CHECKS {
+            let name = format!("{}/{}", meta.exercise, meta.name);
+            match run(&name) {
+                Some(Ok(detail)) => println!("{name}: {detail}"),
+                Some(Err(failure)) => panic!("{name} fails on the reference: {failure:?}"),
+                None => panic!("{name} is declared but has no arm in run"),
+            }
+        }
+    }
+
+    /// Asserts that `result` failed with a cause containing `cause`.
+    fn caught(result: crate::check::CheckResult, cause: &str) {
+        match result {
+            Ok(detail) => panic!("the planted mistake passed: {detail}"),
+            Err(f) => assert!(f.cause.contains(cause), "expected a cause with {cause:?}, got {f:?}"),
+        }
+    }
+
+    // Planted mistakes, each as a student might write it.
+
+    fn schlick_with_cos_i(cos_i: Float, eta_i: Float, eta_t: Float) -> Float {
+        let r0 = ((eta_i - eta_t) / (eta_i + eta_t)).powi(2);
+        let cos_i = cos_i.clamp(0.0, 1.0);
+        if eta_i > eta_t && (eta_i / eta_t).powi(2) * (1.0 - cos_i * cos_i) >= 1.0 {
+            return 1.0;
+        }
+        r0 + (1.0 - r0) * (1.0 - cos_i).powi(5)
+    }
+
+    fn schlick_unsquared(cos_i: Float, eta_i: Float, eta_t: Float) -> Float {
+        let r0 = (eta_i - eta_t) / (eta_i + eta_t);
+        r0 + (1.0 - r0) * (1.0 - cos_i).powi(5)
+    }
+
+    fn schlick_fourth_power(cos_i: Float, eta_i: Float, eta_t: Float) -> Float {
+        let r0 = ((eta_i - eta_t) / (eta_i + eta_t)).powi(2);
+        r0 + (1.0 - r0) * (1.0 - cos_i).powi(4)
+    }
+
+    fn schlick_no_tir(cos_i: Float, eta_i: Float, eta_t: Float) -> Float {
+        let r0 = ((eta_i - eta_t) / (eta_i + eta_t)).powi(2);
+        let cos = if eta_i <= eta_t {
+            cos_i
+        } else {
+            (1.0 - (eta_i / eta_t).powi(2) * (1.0 - cos_i * cos_i)).sqrt()
+        };
+        r0 + (1.0 - r0) * (1.0 - cos).powi(5)
+    }
+
+    #[test]
+    fn schlick_mistakes_are_caught() {
+        caught(schlick_cases(schlick_with_cos_i), "not cos θ_i");
+        caught(schlick_cases(schlick_unsquared), "square of the amplitude");
+        caught(schlick_cases(schlick_fourth_power), "fifth");
+        caught(schlick_cases(schlick_no_tir), "reflects everything: R = 1");
+    }
+
+    /// The exact Fresnel equations with a chosen slip.
+    fn fresnel_with(
+        cos_i: Float,
+        eta_i: Float,
+        eta_t: Float,
+        half: Float,
+        swap_p: bool,
+        invert: bool,
+    ) -> Float {
+        let eta = if invert { eta_t / eta_i } else { eta_i / eta_t };
+        let sin2_t = eta * eta * (1.0 - cos_i * cos_i);
+        if sin2_t >= 1.0 {
+            return 1.0;
+        }
+        let cos_t = (1.0 - sin2_t).sqrt();
+        let r_s = (eta_i * cos_i - eta_t * cos_t) / (eta_i * cos_i + eta_t * cos_t);
+        let r_p =
+            if swap_p { r_s } else { (eta_t * cos_i - eta_i * cos_t) / (eta_t * cos_i + eta_i * cos_t) };
+        half * (r_s * r_s + r_p * r_p)
+    }
+
+    #[test]
+    fn fresnel_mistakes_are_caught() {
+        caught(fresnel_cases(|c, i, t| fresnel_with(c, i, t, 1.0, false, false)), "mean of the two");
+        caught(fresnel_cases(|c, i, t| fresnel_with(c, i, t, 0.5, true, false)), "trade places");
+        caught(fresnel_cases(|c, i, t| fresnel_with(c, i, t, 0.5, false, true)), "no total internal");
+        // The reference formula with the slips off passes.
+        assert!(fresnel_cases(|c, i, t| fresnel_with(c, i, t, 0.5, false, false)).is_ok());
+    }
+
+    #[test]
+    fn mirror_mistakes_are_caught() {
+        // reflect(−dir, n): the ray goes back into the surface.
+        caught(mirror_cases(|d, n| l05_shading::reflect(-d, n)), "goes in as it is");
+        // Normalised: a non-unit direction changes length.
+        caught(mirror_cases(|d, n| l05_shading::reflect(d, n).normalize()), "do not normalise");
+        // The sign typo d + 2(d·n)n.
+        caught(mirror_cases(|d, n| d + 2.0 * d.dot(n) * n), "reflect(dir, n)");
+    }
+
+    #[test]
+    fn interface_mistakes_are_caught() {
+        // The outward normal from inside.
+        caught(
+            interface_cases(|h: &Hit, ior| Interface { normal: h.outward_normal(), ..interface(h, ior) }),
+            "outward normal",
+        );
+        // η swapped: ior outside, 1 inside.
+        caught(
+            interface_cases(|h: &Hit, ior| {
+                let s = interface(h, ior);
+                Interface { eta_i: s.eta_t, eta_t: s.eta_i, ..s }
+            }),
+            "the two swap",
+        );
+        // entering inverted.
+        caught(
+            interface_cases(|h: &Hit, ior| Interface { entering: !h.front_face, ..interface(h, ior) }),
+            "front_face",
+        );
+    }
+
+    /// Refraction with a chosen slip.
+    fn refract_with(i: Vec3, n: Vec3, eta: Float, slip: &str) -> Option<Vec3> {
+        let eta = if slip == "invert" { 1.0 / eta } else { eta };
+        let cos_i = if slip == "cos sign" { i.dot(n).clamp(0.0, 1.0) } else { (-i.dot(n)).clamp(0.0, 1.0) };
+        let sin2_t = eta * eta * (1.0 - cos_i * cos_i);
+        let tir = if slip == "strict" { sin2_t > 1.0 } else { sin2_t >= 1.0 };
+        if tir && slip != "no tir" {
+            return None;
+        }
+        let cos_t = (1.0 - sin2_t).sqrt();
+        if slip == "plus" {
+            return Some(eta * i + (eta * cos_i + cos_t) * n);
+        }
+        Some(eta * i + (eta * cos_i - cos_t) * n)
+    }
+
+    #[test]
+    fn refract_mistakes_are_caught() {
+        caught(refract_cases(|i, n, e| refract_with(i, n, e, "invert")), "do not invert");
+        caught(refract_cases(|i, n, e| refract_with(i, n, e, "cos sign")), "cos θ_i = −i·n");
+        caught(refract_cases(|i, n, e| refract_with(i, n, e, "plus")), "goes through the surface");
+        caught(refract_cases(|i, n, e| refract_with(i, n, e, "no tir")), "return None");
+        caught(critical_angle(|i, n, e| refract_with(i, n, e, "strict")), "not > 1");
+        caught(
+            tiny_glass_sphere(|i, n, e| refract_with(i, n, e, "plus"), interface),
+            "goes through the surface",
+        );
+        // The reference formula with no slip passes all three.
+        let fine = |i, n, e| refract_with(i, n, e, "");
+        assert!(refract_cases(fine).is_ok() && critical_angle(fine).is_ok());
+    }
+
+    #[test]
+    fn a_tiny_sphere_catches_the_outward_normal_at_the_exit() {
+        // With the outward normal at the exit, refract sees i·n > 0 and the ray does not leave
+        // the bead where it should.
+        let outward = |h: &Hit, ior| Interface { normal: h.outward_normal(), ..interface(h, ior) };
+        assert!(tiny_glass_sphere(refract, outward).is_err());
+        // With the indices never swapped the ray leaves bent the wrong way.
+        let same = |h: &Hit, ior| Interface { eta_i: 1.0, eta_t: ior, ..interface(h, ior) };
+        caught(tiny_glass_sphere(refract, same), "swaps the indices");
+    }
+}

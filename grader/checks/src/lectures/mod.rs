@@ -1,0 +1,112 @@
+//! The checks of every lecture: a table of declarations per lecture
+//! (always compiled, so the grader knows every check and its points even when
+//! a lecture does not compile) and, behind the lecture's feature, the code.
+//!
+//! To add a check: declare it in the lecture's `CHECKS` table and give it an
+//! arm in the lecture's `run`; `every_declared_check_runs` keeps the two in
+//! step: a declared check without an arm ends "crashed: no such check" in
+//! `grader --strict`, which CI runs on the reference.
+
+use crate::check::{CheckResult, Info, Meta};
+
+pub mod l01;
+pub mod l02;
+pub mod l03;
+pub mod l04;
+pub mod l05;
+pub mod l06;
+pub mod l07;
+pub mod l08;
+pub mod l09;
+pub mod l10;
+// INSTRUCTOR BEGIN
+#[cfg(feature = "hidden")]
+pub mod hidden;
+// INSTRUCTOR END
+
+/// One lecture's checks: declarations, and the runner when its code is built.
+pub struct Lecture {
+    /// `02`.
+    pub number: &'static str,
+    pub checks: &'static [Meta],
+    /// Runs `exercise/name`; `None` for a name it does not know.
+    pub run: Option<fn(&str) -> Option<CheckResult>>,
+    pub hidden: bool,
+}
+
+/// The runner of a lecture whose feature is on.
+macro_rules! runner {
+    ($feature:literal, $module:ident) => {{
+        #[cfg(feature = $feature)]
+        let run: Option<fn(&str) -> Option<CheckResult>> = Some($module::run);
+        #[cfg(not(feature = $feature))]
+        let run: Option<fn(&str) -> Option<CheckResult>> = None;
+        run
+    }};
+}
+
+/// Every lecture's checks, in lecture order (hidden ones last).
+pub fn lectures() -> Vec<Lecture> {
+    #[allow(unused_mut)]
+    let mut all = vec![
+        Lecture { number: "01", checks: l01::CHECKS, run: runner!("l01", l01), hidden: false },
+        Lecture { number: "02", checks: l02::CHECKS, run: runner!("l02", l02), hidden: false },
+        Lecture { number: "03", checks: l03::CHECKS, run: runner!("l03", l03), hidden: false },
+        Lecture { number: "04", checks: l04::CHECKS, run: runner!("l04", l04), hidden: false },
+        Lecture { number: "05", checks: l05::CHECKS, run: runner!("l05", l05), hidden: false },
+        Lecture { number: "06", checks: l06::CHECKS, run: runner!("l06", l06), hidden: false },
+        Lecture { number: "07", checks: l07::CHECKS, run: runner!("l07", l07), hidden: false },
+        Lecture { number: "08", checks: l08::CHECKS, run: runner!("l08", l08), hidden: false },
+        Lecture { number: "09", checks: l09::CHECKS, run: runner!("l09", l09), hidden: false },
+        Lecture { number: "10", checks: l10::CHECKS, run: runner!("l10", l10), hidden: false },
+    ];
+    // INSTRUCTOR BEGIN
+    #[cfg(feature = "hidden")]
+    all.extend(hidden::lectures());
+    // INSTRUCTOR END
+    all
+}
+
+/// Every declared check, as the grader lists them.
+pub fn infos() -> Vec<Info> {
+    let mut infos = Vec::new();
+    for lecture in lectures() {
+        for meta in lecture.checks {
+            infos.push(Info::new(lecture.number, meta, lecture.hidden, lecture.run.is_some()));
+        }
+    }
+    infos
+}
+
+/// Runs the unit or extreme check `id` (`NN/exercise/name`); `None` when no
+/// built lecture has it.
+pub fn run(id: &str) -> Option<CheckResult> {
+    let (number, rest) = id.split_once('/')?;
+    lectures().into_iter().filter(|l| l.number == number).find_map(|l| {
+        let declared = l.checks.iter().any(|m| format!("{}/{}", m.exercise, m.name) == rest);
+        if declared { (l.run?)(rest) } else { None }
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::collections::HashSet;
+
+    #[test]
+    fn ids_are_unique_and_every_need_names_an_exercise_of_an_earlier_or_same_lecture() {
+        let infos = infos();
+        let mut seen = HashSet::new();
+        for info in &infos {
+            assert!(seen.insert(info.id.clone()), "{} is declared twice", info.id);
+        }
+        let exercises: HashSet<String> =
+            infos.iter().map(|i| format!("{}/{}", i.lecture, i.exercise)).collect();
+        for info in &infos {
+            for need in &info.needs {
+                assert!(exercises.contains(need), "{} needs {need}, which no check tests", info.id);
+                assert!(need[..2] <= info.lecture[..], "{} needs the later {need}", info.id);
+            }
+        }
+    }
+}

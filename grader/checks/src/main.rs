@@ -1,0 +1,135 @@
+//! `raylab-checks`: the grader's checks and the complete tracer, in a binary
+//! the `grader` driver builds with the lectures that compile (one cargo
+//! feature per lecture) and runs in child processes, one per check.
+//!
+//! - `raylab-checks list` prints every check as JSON, with whether its code is built;
+//! - `raylab-checks run ID --verdict FILE --out DIR` runs one check and writes
+//!   its outcome to FILE (a panic writes the panic there first);
+//! - `render`, `bless` and `bench-rays` are the tools of `grader render`,
+//!   `grader bless` and `grader bench-rays`, present when every lecture is built.
+
+mod check;
+mod images;
+mod lectures;
+#[cfg(feature = "l03")]
+mod scene_objects;
+#[cfg(feature = "l10")]
+mod tools;
+#[cfg(feature = "l10")]
+mod tracer;
+
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand};
+
+use crate::check::Outcome;
+
+#[derive(Parser)]
+#[command(name = "grader", about = "The raylab checks and tools (run through `cargo run -p grader`).")]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Every check, as JSON: id, lecture, exercise, kind, points, needs, and whether it is built.
+    List,
+    /// Run one check in this process (the grader runs each in its own).
+    Run {
+        /// `NN/exercise/name`.
+        id: String,
+        /// Where to write the outcome (JSON).
+        #[arg(long)]
+        verdict: PathBuf,
+        /// Where image checks write expected / yours / diff.
+        #[arg(long)]
+        out: PathBuf,
+    },
+    /// Render a TOML or MIT 6.837 scene with the complete tracer.
+    #[cfg(feature = "l10")]
+    Render(tools::render::RenderArgs),
+    /// Regenerate the lectures' snapshots (PNG and AOVs) from the reference.
+    #[cfg(feature = "l10")]
+    Bless {
+        /// Only this lecture (e.g. 02).
+        lecture: Option<String>,
+    },
+    /// Primary-ray throughput of lecture 09's BVH on a mesh (run with --release).
+    #[cfg(feature = "l10")]
+    BenchRays(tools::bench::BenchArgs),
+    /// Speed against accuracy, side by side: tables and plots under target/grader/tradeoffs (run with
+    /// --release).
+    #[cfg(feature = "l10")]
+    Tradeoffs(tools::tradeoffs::TradeoffsArgs),
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match cli.command {
+        Command::List => {
+            let mut infos = lectures::infos();
+            infos.extend(images::infos());
+            serde_json::to_string_pretty(&infos).map(|json| println!("{json}")).map_err(|e| e.to_string())
+        }
+        Command::Run { id, verdict, out } => run(&id, &verdict, &out),
+        #[cfg(feature = "l10")]
+        Command::Render(args) => tools::render::render(&args),
+        #[cfg(feature = "l10")]
+        Command::Bless { lecture } => images::bless(lecture.as_deref()),
+        #[cfg(feature = "l10")]
+        Command::BenchRays(args) => tools::bench::bench_rays(&args),
+        #[cfg(feature = "l10")]
+        Command::Tradeoffs(args) => tools::tradeoffs::tradeoffs(&args),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(message) => {
+            eprintln!("error: {message}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+/// The address space a check may use. The lecture checks need a few tens of
+/// megabytes; a student's runaway allocation fails here ("memory allocation
+/// of N bytes failed") instead of swapping the machine.
+const MEMORY_LIMIT: u64 = 4 << 30;
+
+/// Runs check `id`: a panic hook records any panic in `verdict` (the grader
+/// tells `todo!()` from other panics by its message), then the outcome
+/// overwrites it when the check returns.
+fn run(id: &str, verdict: &Path, out: &Path) -> Result<(), String> {
+    // Best effort: where limits cannot be set, the grader's time limit still holds.
+    let _ = rlimit::setrlimit(rlimit::Resource::AS, MEMORY_LIMIT, MEMORY_LIMIT);
+    let file = verdict.to_owned();
+    let default_hook = std::panic::take_hook();
+    std::panic::set_hook(Box::new(move |info| {
+        let message = info
+            .payload()
+            .downcast_ref::<&str>()
+            .map(|s| (*s).to_owned())
+            .or_else(|| info.payload().downcast_ref::<String>().cloned())
+            .unwrap_or_else(|| "(a panic without a message)".to_owned());
+        let (path, line) = info.location().map_or((String::new(), 0), |l| (l.file().to_owned(), l.line()));
+        let json =
+            serde_json::json!({ "status": "panicked", "message": message, "file": path, "line": line });
+        let _ = std::fs::write(&file, json.to_string());
+        default_hook(info);
+    }));
+    let result = if id.split('/').nth(1).is_some_and(|kind| kind == "image" || kind == "geometry") {
+        images::run(id, out)
+    } else {
+        lectures::run(id)
+    };
+    let Some(result) = result else {
+        return Err(format!("no check {id} in this build"));
+    };
+    let outcome = match result {
+        Ok(detail) => Outcome::Passed { detail, images: None },
+        Err(failure) => Outcome::Failed(failure),
+    };
+    let json = serde_json::to_string(&outcome).map_err(|e| e.to_string())?;
+    std::fs::write(verdict, json).map_err(|e| format!("{}: {e}", verdict.display()))
+}

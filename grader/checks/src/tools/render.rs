@@ -1,0 +1,226 @@
+//! `grader render SCENE -o OUT.png`: any TOML or MIT 6.837 scene through the
+//! complete tracer, with the flags that override its `[render]` table, its
+//! AOVs, statistics and the ray tree of one pixel.
+
+use std::path::PathBuf;
+
+use clap::ValueEnum;
+use l06_shadows::ShadowMode;
+use l08_ray_tree::TraceSettings;
+use l10_textures_sampling::{Filter, Pattern};
+use raylab::{Float, Scene};
+
+use crate::tracer::{self as shade, Aov, Sampling};
+
+#[derive(clap::Args)]
+pub struct RenderArgs {
+    /// The scene file (`.toml`, or any other name for the 6.837 format).
+    scene: PathBuf,
+    /// Where to write the image (PNG, or OpenEXR for depth and normal AOVs).
+    #[arg(short, long, default_value = "out.png")]
+    output: PathBuf,
+    /// Image size WxH (overrides the scene's).
+    #[arg(long, value_parser = parse_size)]
+    size: Option<(u32, u32)>,
+    /// Write an arbitrary output variable instead of the shaded image.
+    #[arg(long, value_enum)]
+    aov: Option<Aov>,
+    /// Print ray statistics.
+    #[arg(long)]
+    stats: bool,
+    /// With --stats: print them as JSON.
+    #[arg(long, requires = "stats")]
+    json: bool,
+    /// The deepest level of the ray tree (6.837's -bounces) [default: the scene's `depth`, else 5].
+    #[arg(long)]
+    depth: Option<u32>,
+    /// The smallest contribution a ray may carry to be traced (6.837's -weight) [default: the
+    /// scene's `weight`, else 0.01].
+    #[arg(long)]
+    weight: Option<Float>,
+    /// Shadow rays per area light and shaded point, 1 to 4096 [default: the scene's
+    /// `area_samples`, else 16].
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=4096))]
+    samples: Option<u32>,
+    /// Eye rays per pixel, 1 to 1024 [default: the scene's `spp`, else 1].
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1024))]
+    spp: Option<u32>,
+    /// Where a pixel's eye rays go [default: jittered with more than one, else the centre].
+    #[arg(long, value_enum)]
+    pattern: Option<PatternArg>,
+    /// How a pixel weighs its eye rays [default: box].
+    #[arg(long, value_enum)]
+    filter: Option<FilterArg>,
+    /// Trace no shadow rays.
+    #[arg(long)]
+    no_shadows: bool,
+    /// Transparent objects filter the light by their transparent colour instead of blocking it
+    /// [default: the scene's `transparent_shadows`, else off].
+    #[arg(long)]
+    transparent_shadows: bool,
+    /// Split transparent surfaces between reflection and refraction by the exact Fresnel reflectance.
+    #[arg(long)]
+    fresnel: bool,
+    /// Print the ray tree of pixel X,Y (0,0 is the top left).
+    #[arg(long, value_parser = parse_pixel)]
+    tree: Option<(u32, u32)>,
+}
+
+impl RenderArgs {
+    /// The scene's own settings ([`shade::scene_settings`]), overridden by the flags given.
+    fn settings(&self, scene: &Scene) -> TraceSettings {
+        let own = shade::scene_settings(scene);
+        TraceSettings {
+            max_depth: self.depth.unwrap_or(own.max_depth),
+            min_weight: self.weight.unwrap_or(own.min_weight),
+            shadows: !self.no_shadows,
+            shadow_mode: if self.transparent_shadows { ShadowMode::Transmissive } else { own.shadow_mode },
+            area_samples: self.samples.unwrap_or(own.area_samples),
+            fresnel: self.fresnel,
+        }
+    }
+
+    /// The scene's sampling ([`shade::scene_sampling`]), overridden by the flags given.
+    fn sampling(&self, scene: &Scene) -> Sampling {
+        let own = shade::scene_sampling(scene);
+        let spp = self.spp.unwrap_or(own.spp);
+        let pattern = match self.pattern {
+            Some(PatternArg::Regular) => Pattern::Regular,
+            Some(PatternArg::Jittered) => Pattern::Jittered,
+            Some(PatternArg::Stratified) => Pattern::Stratified,
+            None if spp > 1 => Pattern::Jittered,
+            None => Pattern::Regular,
+        };
+        let filter = match self.filter {
+            Some(FilterArg::Box) => Filter::Box,
+            Some(FilterArg::Tent) => Filter::Tent,
+            None => own.filter,
+        };
+        Sampling { spp, pattern, filter }
+    }
+}
+
+/// Sample patterns (lecture 10).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+enum PatternArg {
+    Regular,
+    Jittered,
+    Stratified,
+}
+
+/// Pixel filters (lecture 10).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+enum FilterArg {
+    Box,
+    Tent,
+}
+
+fn parse_pixel(s: &str) -> Result<(u32, u32), String> {
+    let (x, y) = s.split_once(',').ok_or_else(|| format!("expected X,Y, e.g. 100,75, found {s:?}"))?;
+    let parse = |v: &str| v.trim().parse::<u32>().map_err(|_| format!("expected a pixel index, found {v:?}"));
+    Ok((parse(x)?, parse(y)?))
+}
+
+pub fn parse_size(s: &str) -> Result<(u32, u32), String> {
+    let (w, h) =
+        s.split_once(['x', 'X']).ok_or_else(|| format!("expected WxH, e.g. 320x240, found {s:?}"))?;
+    let parse = |v: &str| match v.trim().parse::<u32>() {
+        Ok(n) if (1..=16384).contains(&n) => Ok(n),
+        _ => Err(format!("expected a size from 1 to 16384, found {v:?}")),
+    };
+    Ok((parse(w)?, parse(h)?))
+}
+
+pub fn render(args: &RenderArgs) -> Result<(), String> {
+    let mut scene = raylab::scene::load(&args.scene).map_err(|e| e.to_string())?;
+    if let Some((w, h)) = args.size {
+        scene.width = w;
+        scene.height = h;
+    }
+    let settings = args.settings(&scene);
+    if let Some(pixel) = args.tree {
+        let (color, tree) = shade::pixel_tree(&scene, pixel, &settings)?;
+        println!(
+            "pixel ({}, {}): colour ({:.3}, {:.3}, {:.3})\n{tree}",
+            pixel.0, pixel.1, color.x, color.y, color.z
+        );
+    }
+    let (image, stats) = shade::render_scene(&scene, args.aov, &settings, args.sampling(&scene))?;
+    let write = match args.aov {
+        Some(Aov::Depth | Aov::Normal) => image.save_exr(&args.output),
+        _ => image.save_png(&args.output),
+    };
+    write.map_err(|e| e.to_string())?;
+    if args.stats {
+        if args.json {
+            println!("{}", stats.to_json());
+        } else {
+            print!("{stats}");
+        }
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{Cli, Command};
+    use clap::Parser;
+    use std::path::Path;
+
+    /// A scene whose `[render]` table sets every key.
+    const OWN: &str = "[render]\ndepth = 0\nweight = 0.5\ntransparent_shadows = true\narea_samples = 4\n\
+                       [camera]\ntype = \"perspective\"\neye = [0, 0, 5]\nat = [0, 0, 0]\nfovy = 40\n";
+
+    /// The settings `grader render` uses for the scene `text` with the command-line `flags`.
+    fn settings(text: &str, flags: &[&str]) -> TraceSettings {
+        let scene = raylab::scene::parse_toml(text, Path::new("s.toml")).unwrap_or_else(|e| panic!("{e}"));
+        let argv = ["grader", "render", "s.toml"].into_iter().chain(flags.iter().copied());
+        let Command::Render(args) = Cli::try_parse_from(argv).unwrap_or_else(|e| panic!("{e}")).command
+        else {
+            panic!("a render command");
+        };
+        args.settings(&scene)
+    }
+
+    #[test]
+    fn the_scene_sets_what_the_flags_leave_and_the_defaults_the_rest() {
+        let default = TraceSettings::default();
+        let transmissive = ShadowMode::Transmissive;
+        // The scene's own table, every key.
+        let own = TraceSettings {
+            max_depth: 0,
+            min_weight: 0.5,
+            shadow_mode: transmissive,
+            area_samples: 4,
+            ..default
+        };
+        assert_eq!(settings(OWN, &[]), own);
+        // Every flag given: the flags win.
+        let flags = ["--depth", "3", "--weight", "0.25", "--samples", "9", "--no-shadows", "--fresnel"];
+        let expected = TraceSettings {
+            max_depth: 3,
+            min_weight: 0.25,
+            shadows: false,
+            shadow_mode: transmissive,
+            area_samples: 9,
+            fresnel: true,
+        };
+        assert_eq!(settings(OWN, &flags), expected);
+        // One flag: only that one changes.
+        assert_eq!(settings(OWN, &["--samples", "64"]), TraceSettings { area_samples: 64, ..own });
+        // No table, no flags: the defaults (6.837 files are always so); the flag turns on
+        // transparent shadows, there being no flag to turn them off.
+        let plain = &OWN[OWN.find("[camera]").unwrap()..];
+        assert_eq!(settings(plain, &[]), default);
+        assert_eq!(settings(plain, &["--transparent-shadows"]).shadow_mode, transmissive);
+    }
+
+    #[test]
+    fn a_sample_count_outside_1_to_4096_is_refused() {
+        for n in ["0", "4097", "-1", "many"] {
+            assert!(Cli::try_parse_from(["grader", "render", "s.toml", "--samples", n]).is_err(), "{n}");
+        }
+        assert!(Cli::try_parse_from(["grader", "render", "s.toml", "--samples", "4096"]).is_ok());
+    }
+}

@@ -1,0 +1,277 @@
+//! Building the checks with the lectures that compile.
+//!
+//! `raylab-checks` has one cargo feature per lecture. The grader first asks
+//! cargo for all of them (`--keep-going`, JSON diagnostics); every lecture
+//! with an error is set aside with its first error, and so is every lecture
+//! that uses it, and the rest is built again — as rustlings drives cargo for
+//! its exercises. A compile error in lecture 07 costs 07, 08 and 10 and
+//! leaves the grade of 01–06 and 09 standing.
+
+use std::collections::{BTreeMap, BTreeSet};
+use std::path::{Path, PathBuf};
+use std::process::{Command, Stdio};
+
+use serde_json::Value;
+
+use crate::workspace::Workspace;
+
+/// A lecture's first compiler error.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct CompileError {
+    /// `lectures/07-…/src/refract.rs:42:13`, relative to the workspace root.
+    pub location: String,
+    /// The compiler's one-line message.
+    pub message: String,
+    /// The compiler's full text of that error.
+    pub rendered: String,
+    /// The error is in the grader's checks for the lecture, not in its code:
+    /// the lecture compiles, but a signature the checks call has changed.
+    pub in_checks: bool,
+}
+
+/// What the build produced.
+#[derive(Debug)]
+pub struct Built {
+    /// The checks binary.
+    pub binary: PathBuf,
+    /// The lectures whose code is in it.
+    pub lectures: BTreeSet<String>,
+    /// The lectures that did not compile, with their first error.
+    pub failed: BTreeMap<String, CompileError>,
+    /// The lectures left out because one they use did not compile:
+    /// lecture → the failed lecture it waits for.
+    pub waiting: BTreeMap<String, String>,
+}
+
+/// How to build.
+#[derive(Clone, Debug)]
+pub struct BuildOptions {
+    /// The lectures wanted (their prerequisites come in by themselves).
+    pub lectures: BTreeSet<String>,
+    pub hidden: bool,
+    pub release: bool,
+    pub f64: bool,
+    /// Where cargo builds (`None`: the workspace's own `target/`).
+    pub target_dir: Option<PathBuf>,
+    /// Print cargo's progress lines ("Compiling l05-shading") to stderr.
+    pub show_progress: bool,
+}
+
+/// Builds `raylab-checks` in `ws` with as many of the wanted lectures as compile.
+pub fn build(ws: &Workspace, options: &BuildOptions) -> Result<Built, String> {
+    let mut wanted: BTreeSet<String> = options.lectures.iter().flat_map(|l| ws.prerequisites(l)).collect();
+    let mut failed = BTreeMap::new();
+    let mut waiting = BTreeMap::new();
+    // Each round sets aside at least one lecture, so there are at most as many rounds as lectures.
+    for _ in 0..=ws.lectures.len() {
+        let attempt = cargo_build(ws, options, &wanted)?;
+        let Some(errors) = attempt.errors else {
+            let binary = attempt.binary.ok_or("cargo built the checks but named no executable")?;
+            return Ok(Built { binary, lectures: wanted, failed, waiting });
+        };
+        let mut blamed = blame(ws, &errors);
+        blamed.retain(|lecture, _| wanted.contains(lecture));
+        if blamed.is_empty() {
+            // An error no lecture explains (the tracer or the image checks, which use every lecture):
+            // set aside the last lecture still wanted, which they need, and try again.
+            let Some(last) = wanted.iter().next_back().cloned() else {
+                let first = errors.first().map_or_else(String::new, |e| e.error.rendered.clone());
+                return Err(format!("the checks do not compile even without any lecture:\n{first}"));
+            };
+            let error = errors.first().map(|e| e.error.clone()).unwrap_or_else(|| CompileError {
+                location: String::new(),
+                message: "cargo failed without a compiler error".into(),
+                rendered: attempt.stderr.clone(),
+                in_checks: true,
+            });
+            blamed.insert(last, error);
+        }
+        for (lecture, error) in blamed {
+            for dependent in ws.dependents(&lecture) {
+                if wanted.remove(&dependent) && dependent != lecture {
+                    waiting.insert(dependent, lecture.clone());
+                }
+            }
+            failed.insert(lecture, error);
+        }
+    }
+    Err("the checks did not build after setting every lecture aside".into())
+}
+
+/// The first error of each lecture that has one.
+fn blame(ws: &Workspace, errors: &[Located]) -> BTreeMap<String, CompileError> {
+    let mut blamed = BTreeMap::new();
+    for located in errors {
+        let lecture = match &located.package {
+            package if package == "raylab-checks" => checks_file_lecture(&located.error.location),
+            package => ws.by_package(package).map(|l| l.number.clone()),
+        };
+        if let Some(lecture) = lecture {
+            blamed.entry(lecture).or_insert_with(|| located.error.clone());
+        }
+    }
+    blamed
+}
+
+/// `07` for an error in `grader/checks/src/lectures/l07.rs`.
+fn checks_file_lecture(location: &str) -> Option<String> {
+    let file = location.split(':').next()?;
+    let name = Path::new(file).file_stem()?.to_str()?;
+    let number = name.strip_prefix('l')?;
+    (file.contains("lectures/") && number.len() == 2 && number.chars().all(|c| c.is_ascii_digit()))
+        .then(|| number.to_owned())
+}
+
+/// An error and the package it is in.
+#[derive(Clone, Debug)]
+struct Located {
+    package: String,
+    error: CompileError,
+}
+
+struct Attempt {
+    binary: Option<PathBuf>,
+    /// `None` when the build succeeded.
+    errors: Option<Vec<Located>>,
+    stderr: String,
+}
+
+fn cargo_build(
+    ws: &Workspace,
+    options: &BuildOptions,
+    lectures: &BTreeSet<String>,
+) -> Result<Attempt, String> {
+    let mut features: Vec<String> = lectures.iter().map(|l| format!("l{l}")).collect();
+    if options.hidden {
+        features.push("hidden".into());
+    }
+    if options.f64 {
+        features.push("raylab/f64".into());
+    }
+    let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
+    let mut command = Command::new(cargo);
+    command
+        .current_dir(&ws.root)
+        .args(["build", "--manifest-path"])
+        .arg(ws.root.join("Cargo.toml"))
+        .args(["-p", "raylab-checks", "--bin", "raylab-checks", "--no-default-features", "--keep-going"])
+        .args(["--message-format", "json"])
+        .stdin(Stdio::null())
+        .stdout(Stdio::piped())
+        .stderr(if options.show_progress { Stdio::inherit() } else { Stdio::piped() });
+    if !features.is_empty() {
+        command.arg("--features").arg(features.join(","));
+    }
+    if options.release {
+        command.arg("--release");
+    }
+    if let Some(dir) = &options.target_dir {
+        command.env("CARGO_TARGET_DIR", dir);
+    }
+    let output = command.output().map_err(|e| format!("could not run cargo: {e}"))?;
+    let stdout = String::from_utf8_lossy(&output.stdout);
+    let stderr = String::from_utf8_lossy(&output.stderr).into_owned();
+    let mut binary = None;
+    let mut errors = Vec::new();
+    for line in stdout.lines() {
+        let Ok(message) = serde_json::from_str::<Value>(line) else { continue };
+        match message["reason"].as_str() {
+            Some("compiler-artifact") => {
+                if let Some(exe) = message["executable"].as_str() {
+                    binary = Some(PathBuf::from(exe));
+                }
+            }
+            Some("compiler-message") if message["message"]["level"] == "error" => {
+                let package = package_name(message["package_id"].as_str().unwrap_or_default());
+                if let Some(error) = compile_error(&ws.root, &message["message"]) {
+                    errors.push(Located { package, error });
+                }
+            }
+            _ => {}
+        }
+    }
+    if output.status.success() {
+        return Ok(Attempt { binary, errors: None, stderr });
+    }
+    Ok(Attempt { binary, errors: Some(errors), stderr })
+}
+
+/// The package name in a cargo package id, in either form cargo prints:
+/// `path+file:///…/lectures/07-x#l07-x@0.1.0` or `l07-x 0.1.0 (path+file:///…)`.
+fn package_name(id: &str) -> String {
+    if let Some((_, rest)) = id.split_once('#') {
+        let name = rest.split('@').next().unwrap_or(rest);
+        // `…/raylab#0.1.0`: the name is the last path segment.
+        if name.chars().next().is_some_and(|c| c.is_ascii_digit()) {
+            return id
+                .split('#')
+                .next()
+                .unwrap_or_default()
+                .rsplit('/')
+                .next()
+                .unwrap_or_default()
+                .to_owned();
+        }
+        return name.to_owned();
+    }
+    id.split_whitespace().next().unwrap_or_default().to_owned()
+}
+
+/// A compiler error message, located at its primary span.
+fn compile_error(root: &Path, message: &Value) -> Option<CompileError> {
+    let text = message["message"].as_str()?.to_owned();
+    // "aborting due to 2 previous errors" and the like carry no span.
+    let spans = message["spans"].as_array()?;
+    let span = spans.iter().find(|s| s["is_primary"] == true).or_else(|| spans.first())?;
+    let file = span["file_name"].as_str()?;
+    let relative =
+        Path::new(file).strip_prefix(root).map_or_else(|_| file.to_owned(), |p| p.display().to_string());
+    let location = format!("{relative}:{}:{}", span["line_start"], span["column_start"]);
+    Some(CompileError {
+        in_checks: relative.starts_with("grader/"),
+        location,
+        message: text,
+        rendered: message["rendered"].as_str().unwrap_or_default().to_owned(),
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn package_names_come_out_of_both_id_forms() {
+        assert_eq!(
+            package_name("path+file:///w/lectures/07-r#l07-reflection-refraction@0.1.0"),
+            "l07-reflection-refraction"
+        );
+        assert_eq!(package_name("path+file:///w/grader/checks#raylab-checks@0.1.0"), "raylab-checks");
+        assert_eq!(package_name("path+file:///w/crates/raylab#0.1.0"), "raylab");
+        assert_eq!(
+            package_name("l02-ray-casting 0.1.0 (path+file:///w/lectures/02-ray-casting)"),
+            "l02-ray-casting"
+        );
+    }
+
+    #[test]
+    fn an_error_in_a_lectures_checks_file_is_that_lectures() {
+        assert_eq!(checks_file_lecture("grader/checks/src/lectures/l07.rs:12:5"), Some("07".into()));
+        assert_eq!(checks_file_lecture("grader/checks/src/images.rs:12:5"), None);
+    }
+
+    #[test]
+    fn the_primary_span_locates_the_error_relative_to_the_root() {
+        let message = serde_json::json!({
+            "message": "mismatched types",
+            "rendered": "error[E0308]: mismatched types\n --> lectures/07-r/src/refract.rs:42:13",
+            "spans": [
+                {"file_name": "/w/lectures/07-r/src/x.rs", "line_start": 1, "column_start": 1, "is_primary": false},
+                {"file_name": "/w/lectures/07-r/src/refract.rs", "line_start": 42, "column_start": 13, "is_primary": true}
+            ]
+        });
+        let error = compile_error(Path::new("/w"), &message).unwrap();
+        assert_eq!(error.location, "lectures/07-r/src/refract.rs:42:13");
+        assert_eq!(error.message, "mismatched types");
+        assert!(!error.in_checks);
+    }
+}

@@ -1,0 +1,263 @@
+//! Grading: build the checks with the lectures that compile, list the
+//! checks, run each in its own process (as many at once as there are
+//! cores), and collect the verdicts.
+
+use std::collections::BTreeSet;
+use std::path::PathBuf;
+use std::process::Command;
+use std::sync::Mutex;
+use std::time::{Duration, Instant};
+
+use crate::compile::{self, BuildOptions, Built};
+use crate::run::{run_check, scratch_dir};
+use crate::verdict::{Info, Status, Verdict, apply_needs, classify, pretty};
+use crate::workspace::Workspace;
+
+/// Which checks to grade: all (empty), or any of lectures (`03`), exercises
+/// (`03/hit_slabs`) and single checks (`03/hit_slabs/unit`).
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Selection(pub Vec<String>);
+
+impl Selection {
+    pub fn parse<S: AsRef<str>>(texts: &[S]) -> Result<Self, String> {
+        let mut parts = Vec::new();
+        for text in texts {
+            let text = text.as_ref().trim_matches('/');
+            let lecture: String = text.chars().take(2).collect();
+            if lecture.len() != 2 || !lecture.chars().all(|c| c.is_ascii_digit()) {
+                return Err(format!(
+                    "expected a lecture (e.g. 03), an exercise (03/hit_slabs) or a check (03/hit_slabs/unit), \
+                     found {text:?}"
+                ));
+            }
+            // `03-polygons-triangles` means lecture 03.
+            let rest = text[2..].trim_start_matches(|c: char| c != '/');
+            parts.push(format!("{lecture}{rest}"));
+        }
+        Ok(Self(parts))
+    }
+
+    /// The lectures selected, none for all.
+    pub fn lectures(&self) -> Vec<&str> {
+        self.0.iter().map(|s| &s[..2]).collect()
+    }
+
+    pub fn matches(&self, info: &Info) -> bool {
+        self.0.is_empty()
+            || self.0.iter().any(|s| match s.len() {
+                2 => info.lecture == *s,
+                _ => info.id == *s || info.id.starts_with(&format!("{s}/")),
+            })
+    }
+}
+
+/// How to grade.
+#[derive(Clone, Debug)]
+pub struct GradeOptions {
+    pub selection: Selection,
+    pub hidden: bool,
+    pub release: bool,
+    pub f64: bool,
+    pub target_dir: Option<PathBuf>,
+    /// With a selection, build only the selected lectures and those they use
+    /// (faster; the shaded image checks, which need every lecture, are then
+    /// skipped unless lecture 10 is among them).
+    pub only_prerequisites: bool,
+    pub jobs: usize,
+    pub show_progress: bool,
+    /// An already built checks binary to use instead of building (tests).
+    pub binary: Option<PathBuf>,
+}
+
+/// The grade of a workspace.
+#[derive(Debug)]
+pub struct Grade {
+    pub verdicts: Vec<Verdict>,
+    /// Lectures that did not compile: lecture → "location: message".
+    pub compile_errors: Vec<(String, crate::compile::CompileError)>,
+    pub seconds: f64,
+}
+
+impl Grade {
+    pub fn points(&self) -> (u32, u32) {
+        (self.verdicts.iter().map(|v| v.points).sum(), self.verdicts.iter().map(|v| v.info.points).sum())
+    }
+
+    pub fn all_passed(&self) -> bool {
+        self.verdicts.iter().all(|v| v.status == Status::Passed)
+    }
+}
+
+/// The folder the grader writes into: `target/grader` of the workspace.
+pub fn out_dir(ws: &Workspace, options: &GradeOptions) -> PathBuf {
+    options.target_dir.clone().unwrap_or_else(|| ws.root.join("target")).join("grader")
+}
+
+pub fn grade(ws: &Workspace, options: &GradeOptions) -> Result<Grade, String> {
+    let start = Instant::now();
+    let selected = options.selection.lectures();
+    let wanted: BTreeSet<String> = if options.only_prerequisites && !selected.is_empty() {
+        selected.iter().flat_map(|l| ws.prerequisites(l)).collect()
+    } else {
+        ws.lectures.iter().map(|l| l.number.clone()).collect()
+    };
+    let built = match &options.binary {
+        Some(binary) => Built {
+            binary: binary.clone(),
+            lectures: wanted.clone(),
+            failed: Default::default(),
+            waiting: Default::default(),
+        },
+        None => compile::build(
+            ws,
+            &BuildOptions {
+                lectures: wanted.clone(),
+                hidden: options.hidden,
+                release: options.release,
+                f64: options.f64,
+                target_dir: options.target_dir.clone(),
+                show_progress: options.show_progress,
+            },
+        )?,
+    };
+    let infos = list(&built)?;
+    let infos: Vec<Info> =
+        infos.into_iter().filter(|i| (options.hidden || !i.hidden) && options.selection.matches(i)).collect();
+    if infos.is_empty() {
+        return Err(format!("no check matches {}", options.selection.0.join(" ")));
+    }
+    let out = out_dir(ws, options);
+    let scratch = scratch_dir(&out)?;
+    // Verdicts that need no run, and the checks to run.
+    let mut verdicts: Vec<Option<Verdict>> = Vec::with_capacity(infos.len());
+    let mut to_run = Vec::new();
+    for (index, info) in infos.iter().enumerate() {
+        match not_runnable(info, &built, &wanted) {
+            Some(verdict) => verdicts.push(Some(verdict)),
+            None => {
+                verdicts.push(None);
+                to_run.push(index);
+            }
+        }
+    }
+    let results = Mutex::new(verdicts);
+    let queue = Mutex::new(to_run.into_iter());
+    let jobs = options.jobs.max(1);
+    let lecture_of = |file: &str| ws.lecture_of_path(file);
+    std::thread::scope(|scope| {
+        for _ in 0..jobs {
+            scope.spawn(|| {
+                while let Some(index) = queue.lock().map(|mut q| q.next()).unwrap_or(None) {
+                    let info = infos[index].clone();
+                    let timeout = Duration::from_secs(info.timeout_s.into());
+                    let verdict = match run_check(&built.binary, &info.id, &scratch, &out, timeout) {
+                        Ok(ran) => classify(info, &ran, lecture_of),
+                        Err(e) => Verdict::new(info, Status::Crashed, e),
+                    };
+                    if let Ok(mut results) = results.lock() {
+                        results[index] = Some(verdict);
+                    }
+                }
+            });
+        }
+    });
+    let mut verdicts: Vec<Verdict> =
+        results.into_inner().map_err(|_| "a grading thread panicked")?.into_iter().flatten().collect();
+    apply_needs(&mut verdicts);
+    Ok(Grade {
+        verdicts,
+        compile_errors: built.failed.into_iter().collect(),
+        seconds: start.elapsed().as_secs_f64(),
+    })
+}
+
+/// The verdict of a check that cannot run in this build, or `None`.
+fn not_runnable(info: &Info, built: &Built, wanted: &BTreeSet<String>) -> Option<Verdict> {
+    if let Some(error) = built.failed.get(&info.lecture) {
+        let summary = if error.in_checks {
+            format!(
+                "lecture {} compiles, but the grader's checks do not compile against it: {} at {} — did a \
+                 function's signature change? The checks call the names and parameters of the exercise contract",
+                info.lecture, error.message, error.location
+            )
+        } else {
+            format!("{} at {}", error.message, error.location)
+        };
+        return Some(Verdict::new(info.clone(), Status::DoesNotCompile, summary));
+    }
+    if let Some(failed) = built.waiting.get(&info.lecture) {
+        let needs = format!("{failed} (does not compile)");
+        let summary = format!("needs lecture {failed}, which does not compile");
+        return Some(Verdict::blocked(info.clone(), &needs, summary));
+    }
+    if info.available {
+        return None;
+    }
+    // An image check whose intersections or tracer need lectures not built.
+    let missing: Vec<String> = ["01", "02", "03", "04", "05", "06", "07", "08", "09", "10"]
+        .iter()
+        .filter(|l| !built.lectures.contains(**l))
+        .map(|l| (*l).to_owned())
+        .collect();
+    if let Some(failed) =
+        missing.iter().find(|l| built.failed.contains_key(*l) || built.waiting.contains_key(*l))
+    {
+        let summary = format!("needs every lecture it draws with to compile; lecture {failed} does not");
+        return Some(Verdict::blocked(info.clone(), &format!("{failed} (does not compile)"), summary));
+    }
+    let summary = if wanted.len() < 10 {
+        "not graded in this run: the shaded image needs every lecture (run `cargo run -p grader`)".to_owned()
+    } else {
+        format!("not in this build of the checks ({})", pretty(&info.exercise_id()))
+    };
+    Some(Verdict::blocked(info.clone(), "the complete tracer", summary))
+}
+
+/// `raylab-checks list`.
+fn list(built: &Built) -> Result<Vec<Info>, String> {
+    let output = Command::new(&built.binary)
+        .arg("list")
+        .output()
+        .map_err(|e| format!("could not run {}: {e}", built.binary.display()))?;
+    if !output.status.success() {
+        return Err(format!(
+            "{} list failed: {}",
+            built.binary.display(),
+            String::from_utf8_lossy(&output.stderr)
+        ));
+    }
+    serde_json::from_slice(&output.stdout).map_err(|e| format!("the list of checks: {e}"))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn selections_read_as_lecture_exercise_or_check() {
+        let info = |id: &str| Info {
+            id: id.into(),
+            lecture: id[..2].into(),
+            exercise: id.split('/').nth(1).unwrap().into(),
+            kind: "unit".into(),
+            points: 1,
+            needs: vec![],
+            about: String::new(),
+            hidden: false,
+            timeout_s: 10,
+            available: true,
+        };
+        let slabs = info("03/hit_slabs/unit");
+        let parse = |s: &[&str]| Selection::parse(s).unwrap();
+        assert!(parse(&[]).matches(&slabs));
+        assert!(parse(&["03"]).matches(&slabs));
+        assert!(parse(&["03-polygons-triangles"]).matches(&slabs));
+        assert!(parse(&["03/hit_slabs"]).matches(&slabs));
+        assert!(parse(&["03/hit_slabs/unit"]).matches(&slabs));
+        assert!(parse(&["02", "03/hit_slabs"]).matches(&slabs));
+        assert!(!parse(&["03/hit_slab"]).matches(&slabs));
+        assert!(!parse(&["02"]).matches(&slabs));
+        assert!(Selection::parse(&["slabs"]).is_err());
+        assert_eq!(parse(&["03/hit_slabs", "05"]).lectures(), ["03", "05"]);
+    }
+}

@@ -1,0 +1,291 @@
+//! Grading a student's tree, and the Gradescope autograder bundle.
+//!
+//! `grader grade --submission DIR` takes only `lectures/*/src` from DIR into
+//! a pristine copy of the instructor's workspace (the work folder), so edited
+//! checks, snapshots or manifests change nothing, and grades it with the
+//! hidden checks. A lecture missing from the submission is graded as the
+//! handout has it (`todo!()` everywhere). Files are written only when their
+//! content changes, so the work folder's build stays incremental: on
+//! Gradescope, `setup.sh` builds it once and each submission rebuilds only
+//! the lectures it changed.
+
+use std::collections::BTreeSet;
+use std::path::{Path, PathBuf};
+
+use crate::handout::stub_solutions;
+use crate::workspace::Workspace;
+
+/// Folders of the instructor's workspace not copied into the work folder.
+const NOT_COPIED: &[&str] = &["target", ".git", "book/book"];
+
+/// The largest submission read, in bytes: a lecture's sources are ~100 kB.
+const MAX_SUBMISSION_BYTES: u64 = 20 << 20;
+
+/// Whether `relative` is one of `folders` or inside one.
+fn under(relative: &str, folders: &[&str]) -> bool {
+    folders.iter().any(|f| relative == *f || relative.starts_with(&format!("{f}/")))
+}
+
+/// `lectures/NN-name/src` or a file in it: what a submission replaces.
+fn is_lecture_source(relative: &str) -> bool {
+    let parts: Vec<&str> = relative.split('/').collect();
+    parts.len() >= 3 && parts[0] == "lectures" && parts[2] == "src"
+}
+
+/// Prepares the work folder for `submission` and returns it, with its target folder.
+pub fn prepare(
+    root: &Path,
+    submission: &Path,
+    workdir: Option<&Path>,
+) -> Result<(Workspace, PathBuf), String> {
+    let root = root.canonicalize().map_err(|e| format!("{}: {e}", root.display()))?;
+    let submitted = find_lectures(submission)?;
+    let work = workdir.map_or_else(|| root.join("target/grader/submission"), Path::to_owned);
+    if work.starts_with(submission) || submission.starts_with(&work) {
+        return Err("the work folder and the submission must not contain each other".into());
+    }
+    std::fs::create_dir_all(&work).map_err(|e| format!("{}: {e}", work.display()))?;
+    let work = work.canonicalize().map_err(|e| format!("{}: {e}", work.display()))?;
+    mirror(&root, &work, &|relative| !under(relative, NOT_COPIED) && !is_lecture_source(relative))?;
+    let ws = Workspace::open(&root)?;
+    let mut taken = Vec::new();
+    for lecture in &ws.lectures {
+        let source = submitted.join(&lecture.folder).join("src");
+        let target = work.join("lectures").join(&lecture.folder).join("src");
+        if source.is_dir() {
+            check_size(&source)?;
+            mirror(&source, &target, &|_| true)?;
+            taken.push(lecture.number.clone());
+        } else {
+            // Not submitted: the handout's stubs.
+            let reference = root.join("lectures").join(&lecture.folder).join("src");
+            mirror(&reference, &target, &|_| true)?;
+            for file in walk(&target)? {
+                if file.extension().is_some_and(|e| e == "rs") {
+                    let text =
+                        std::fs::read_to_string(&file).map_err(|e| format!("{}: {e}", file.display()))?;
+                    let (stubbed, _) = stub_solutions(&text, &lecture.number, &file.display().to_string())?;
+                    write_if_changed(&file, stubbed.as_bytes())?;
+                }
+            }
+        }
+    }
+    eprintln!(
+        "grading {} (lectures {}) in {}",
+        submission.display(),
+        if taken.is_empty() { "none".to_owned() } else { taken.join(", ") },
+        work.display()
+    );
+    let target = work.join("target");
+    Ok((Workspace::open(&work)?, target))
+}
+
+/// The folder of `submission` that holds the lecture folders: its
+/// `lectures/`, or that of its one subfolder that has one (an unpacked zip).
+fn find_lectures(submission: &Path) -> Result<PathBuf, String> {
+    if submission.join("lectures").is_dir() {
+        return Ok(submission.join("lectures"));
+    }
+    let entries = std::fs::read_dir(submission).map_err(|e| format!("{}: {e}", submission.display()))?;
+    let nested: Vec<PathBuf> =
+        entries.filter_map(|e| e.ok().map(|e| e.path())).filter(|p| p.join("lectures").is_dir()).collect();
+    match &nested[..] {
+        [one] => Ok(one.join("lectures")),
+        [] => Err(format!(
+            "{} has no lectures/ folder (submit the workspace with lectures/NN-name/src)",
+            submission.display()
+        )),
+        _ => Err(format!("{} has several folders with a lectures/ folder", submission.display())),
+    }
+}
+
+fn check_size(dir: &Path) -> Result<(), String> {
+    let mut total = 0;
+    for file in walk(dir)? {
+        total += std::fs::metadata(&file).map(|m| m.len()).unwrap_or(0);
+    }
+    if total > MAX_SUBMISSION_BYTES {
+        return Err(format!(
+            "{} holds {} MB; a lecture's sources are well under 1 MB",
+            dir.display(),
+            total >> 20
+        ));
+    }
+    Ok(())
+}
+
+/// Every regular file under `dir` (symbolic links are not followed).
+fn walk(dir: &Path) -> Result<Vec<PathBuf>, String> {
+    let mut files = Vec::new();
+    let mut stack = vec![dir.to_owned()];
+    while let Some(d) = stack.pop() {
+        for entry in std::fs::read_dir(&d).map_err(|e| format!("{}: {e}", d.display()))? {
+            let entry = entry.map_err(|e| e.to_string())?;
+            let kind = entry.file_type().map_err(|e| e.to_string())?;
+            if kind.is_dir() {
+                stack.push(entry.path());
+            } else if kind.is_file() {
+                files.push(entry.path());
+            }
+        }
+    }
+    files.sort();
+    Ok(files)
+}
+
+/// Makes `to` hold the files of `from` that `keep` (given the path relative
+/// to `from`, with `/`) accepts: new or changed files are written, files
+/// that are gone are removed, unchanged ones are left alone.
+fn mirror(from: &Path, to: &Path, keep: &dyn Fn(&str) -> bool) -> Result<(), String> {
+    let mut wanted = BTreeSet::new();
+    let mut stack = vec![from.to_owned()];
+    while let Some(dir) = stack.pop() {
+        for entry in std::fs::read_dir(&dir).map_err(|e| format!("{}: {e}", dir.display()))? {
+            let entry = entry.map_err(|e| e.to_string())?;
+            let path = entry.path();
+            let relative =
+                path.strip_prefix(from).map_err(|e| e.to_string())?.to_string_lossy().replace('\\', "/");
+            if !keep(&relative) {
+                continue;
+            }
+            let kind = entry.file_type().map_err(|e| e.to_string())?;
+            if kind.is_dir() {
+                stack.push(path);
+            } else if kind.is_file() {
+                let bytes = std::fs::read(&path).map_err(|e| format!("{}: {e}", path.display()))?;
+                write_if_changed(&to.join(&relative), &bytes)?;
+                wanted.insert(relative);
+            }
+        }
+    }
+    // Files of an earlier submission that this one does not have.
+    if to.is_dir() {
+        for file in walk(to)? {
+            let relative =
+                file.strip_prefix(to).map_err(|e| e.to_string())?.to_string_lossy().replace('\\', "/");
+            if keep(&relative) && !wanted.contains(&relative) {
+                std::fs::remove_file(&file).map_err(|e| format!("{}: {e}", file.display()))?;
+            }
+        }
+    }
+    Ok(())
+}
+
+fn write_if_changed(path: &Path, bytes: &[u8]) -> Result<(), String> {
+    if std::fs::read(path).is_ok_and(|old| old == bytes) {
+        return Ok(());
+    }
+    if let Some(parent) = path.parent() {
+        std::fs::create_dir_all(parent).map_err(|e| format!("{}: {e}", parent.display()))?;
+    }
+    std::fs::write(path, bytes).map_err(|e| format!("{}: {e}", path.display()))
+}
+
+/// `grader gradescope DIR`: the autograder bundle (zip DIR's contents and upload them).
+pub fn gradescope_bundle(root: &Path, dir: &Path, force: bool) -> Result<(), String> {
+    if dir.exists() {
+        if !force || !dir.join("run_autograder").is_file() {
+            return Err(format!("{} exists (use --force to replace an earlier bundle)", dir.display()));
+        }
+        std::fs::remove_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+    }
+    let root = root.canonicalize().map_err(|e| format!("{}: {e}", root.display()))?;
+    mirror(&root, &dir.join("source"), &|relative| {
+        !under(relative, NOT_COPIED) && !relative.ends_with("/target")
+    })?;
+    let toolchain = env!("CARGO_PKG_RUST_VERSION");
+    let setup = SETUP.replace("{TOOLCHAIN}", toolchain);
+    write_script(&dir.join("setup.sh"), &setup)?;
+    write_script(&dir.join("run_autograder"), RUN_AUTOGRADER)?;
+    println!(
+        "Gradescope bundle written to {}.\nZip its contents (setup.sh and run_autograder at the top) and upload \
+         them as the autograder:\n  (cd {} && zip -qr ../autograder.zip .)",
+        dir.display(),
+        dir.display()
+    );
+    Ok(())
+}
+
+fn write_script(path: &Path, text: &str) -> Result<(), String> {
+    std::fs::write(path, text).map_err(|e| format!("{}: {e}", path.display()))?;
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::PermissionsExt;
+        std::fs::set_permissions(path, std::fs::Permissions::from_mode(0o755))
+            .map_err(|e| format!("{}: {e}", path.display()))?;
+    }
+    Ok(())
+}
+
+/// Gradescope runs this once, as root, to build the autograder image.
+const SETUP: &str = r#"#!/usr/bin/env bash
+# raylab autograder: installs the Rust toolchain and builds the pristine workspace and the
+# work folder, so that grading a submission rebuilds only the lectures it changes.
+set -euo pipefail
+apt-get update -q
+apt-get install -y -q --no-install-recommends build-essential curl ca-certificates
+curl --proto '=https' --tlsv1.2 -sSf https://sh.rustup.rs | sh -s -- -y --profile minimal --default-toolchain {TOOLCHAIN}
+source "$HOME/.cargo/env"
+cd /autograder/source
+cargo build -p grader
+# Grade the reference once in the work folder: builds every lecture and the checks there.
+./target/debug/grader grade --submission /autograder/source --workdir /autograder/work --strict --format json -o /tmp/reference.json
+"#;
+
+/// Gradescope runs this for each submission.
+const RUN_AUTOGRADER: &str = r#"#!/usr/bin/env bash
+# raylab autograder: grades /autograder/submission (only its lectures/*/src is read) with the
+# hidden checks, and writes /autograder/results/results.json.
+set -uo pipefail
+source "$HOME/.cargo/env"
+mkdir -p /autograder/results
+cd /autograder/source
+if ! ./target/debug/grader grade --submission /autograder/submission --workdir /autograder/work \
+    --format gradescope -o /autograder/results/results.json 2> /tmp/grader.err; then
+  if [ ! -s /autograder/results/results.json ]; then
+    python3 - <<'EOF'
+import json
+err = open('/tmp/grader.err').read()[-4000:]
+json.dump({"score": 0, "output": "The grader could not grade this submission:\n" + err,
+           "stdout_visibility": "visible"}, open('/autograder/results/results.json', 'w'))
+EOF
+  fi
+fi
+"#;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn temp(name: &str) -> PathBuf {
+        let dir = std::env::temp_dir().join(format!("raylab-submission-{}-{name}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).unwrap();
+        dir
+    }
+
+    #[test]
+    fn mirroring_writes_only_changes_and_removes_what_is_gone() {
+        let (from, to) = (temp("from"), temp("to"));
+        std::fs::write(from.join("a.rs"), "a").unwrap();
+        std::fs::create_dir_all(from.join("sub")).unwrap();
+        std::fs::write(from.join("sub/b.rs"), "b").unwrap();
+        std::fs::write(to.join("stale.rs"), "old").unwrap();
+        mirror(&from, &to, &|_| true).unwrap();
+        assert_eq!(std::fs::read_to_string(to.join("sub/b.rs")).unwrap(), "b");
+        assert!(!to.join("stale.rs").exists());
+        // An unchanged file keeps its modification time: cargo does not rebuild it.
+        let before = std::fs::metadata(to.join("a.rs")).unwrap().modified().unwrap();
+        std::thread::sleep(std::time::Duration::from_millis(20));
+        mirror(&from, &to, &|_| true).unwrap();
+        assert_eq!(std::fs::metadata(to.join("a.rs")).unwrap().modified().unwrap(), before);
+    }
+
+    #[test]
+    fn the_lectures_folder_may_sit_one_folder_down() {
+        let dir = temp("nested");
+        assert!(find_lectures(&dir).unwrap_err().contains("no lectures/ folder"));
+        std::fs::create_dir_all(dir.join("raylab-main/lectures")).unwrap();
+        assert_eq!(find_lectures(&dir).unwrap(), dir.join("raylab-main/lectures"));
+    }
+}

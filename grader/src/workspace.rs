@@ -1,0 +1,179 @@
+//! The workspace the grader grades: its root, its lectures and how they
+//! depend on one another (read from their Cargo.toml files, so a lecture
+//! that does not compile still has a name and a place), and their hints.
+
+use std::collections::{BTreeMap, BTreeSet};
+use std::path::{Path, PathBuf};
+
+/// One lecture crate.
+#[derive(Clone, Debug)]
+pub struct Lecture {
+    /// `07`.
+    pub number: String,
+    /// `07-reflection-refraction`.
+    pub folder: String,
+    /// The cargo package, `l07-reflection-refraction`.
+    pub package: String,
+    /// The lectures it uses directly (numbers).
+    pub uses: BTreeSet<String>,
+}
+
+/// The lectures of a workspace, and what each uses: its crate's
+/// dependencies and its checks' features (`grader/checks/Cargo.toml`).
+#[derive(Clone, Debug)]
+pub struct Workspace {
+    pub root: PathBuf,
+    pub lectures: Vec<Lecture>,
+}
+
+/// The workspace this grader was built in: it lives in `<root>/grader`.
+pub fn own_root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).parent().expect("the grader has a parent folder").to_owned()
+}
+
+impl Workspace {
+    /// Reads `root/lectures/NN-*/Cargo.toml`.
+    pub fn open(root: &Path) -> Result<Self, String> {
+        let dir = root.join("lectures");
+        let mut lectures = Vec::new();
+        let entries = std::fs::read_dir(&dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+        let mut folders: Vec<PathBuf> = entries.filter_map(|e| e.ok().map(|e| e.path())).collect();
+        folders.sort();
+        for folder in folders {
+            let name = folder.file_name().unwrap_or_default().to_string_lossy().into_owned();
+            let manifest = folder.join("Cargo.toml");
+            if !manifest.is_file() || lecture_number(&name).is_none() {
+                continue;
+            }
+            let text =
+                std::fs::read_to_string(&manifest).map_err(|e| format!("{}: {e}", manifest.display()))?;
+            let table: toml::Table = text.parse().map_err(|e| format!("{}: {e}", manifest.display()))?;
+            let package = table
+                .get("package")
+                .and_then(|p| p.get("name"))
+                .and_then(|n| n.as_str())
+                .ok_or_else(|| format!("{}: no [package] name", manifest.display()))?
+                .to_owned();
+            let uses = table
+                .get("dependencies")
+                .and_then(|d| d.as_table())
+                .map(|deps| deps.keys().filter_map(|k| lecture_number(k)).collect())
+                .unwrap_or_default();
+            lectures.push(Lecture {
+                number: lecture_number(&name).unwrap_or_default(),
+                folder: name,
+                package,
+                uses,
+            });
+        }
+        if lectures.is_empty() {
+            return Err(format!("no lecture crates under {}", dir.display()));
+        }
+        // The checks' features add what a lecture's checks use besides its crate (05's checks
+        // draw with 04's intersections): the build sets a lecture aside with all it needs.
+        let checks = root.join("grader/checks/Cargo.toml");
+        if let Ok(text) = std::fs::read_to_string(&checks) {
+            let table: toml::Table = text.parse().map_err(|e| format!("{}: {e}", checks.display()))?;
+            let features = table.get("features").and_then(|f| f.as_table()).cloned().unwrap_or_default();
+            for lecture in &mut lectures {
+                let enabled = features.get(&format!("l{}", lecture.number)).and_then(|f| f.as_array());
+                for feature in enabled.into_iter().flatten().filter_map(|f| f.as_str()) {
+                    if let Some(number) = feature.strip_prefix('l').filter(|n| n.len() == 2) {
+                        lecture.uses.insert(number.to_owned());
+                    }
+                }
+            }
+        }
+        Ok(Self { root: root.to_owned(), lectures })
+    }
+
+    pub fn lecture(&self, number: &str) -> Option<&Lecture> {
+        self.lectures.iter().find(|l| l.number == number)
+    }
+
+    /// The lecture whose package is `package`.
+    pub fn by_package(&self, package: &str) -> Option<&Lecture> {
+        self.lectures.iter().find(|l| l.package == package)
+    }
+
+    /// `number` and every lecture that uses it, directly or not.
+    pub fn dependents(&self, number: &str) -> BTreeSet<String> {
+        let mut found = BTreeSet::from([number.to_owned()]);
+        loop {
+            let more: Vec<String> = self
+                .lectures
+                .iter()
+                .filter(|l| !found.contains(&l.number) && l.uses.iter().any(|u| found.contains(u)))
+                .map(|l| l.number.clone())
+                .collect();
+            if more.is_empty() {
+                return found;
+            }
+            found.extend(more);
+        }
+    }
+
+    /// `number` and every lecture it uses, directly or not.
+    pub fn prerequisites(&self, number: &str) -> BTreeSet<String> {
+        let mut found = BTreeSet::from([number.to_owned()]);
+        let mut stack = vec![number.to_owned()];
+        while let Some(n) = stack.pop() {
+            for used in self.lecture(&n).map(|l| l.uses.clone()).unwrap_or_default() {
+                if found.insert(used.clone()) {
+                    stack.push(used);
+                }
+            }
+        }
+        found
+    }
+
+    /// The lecture a source path belongs to (`lectures/07-…/src/x.rs`, absolute or not).
+    pub fn lecture_of_path(&self, path: &str) -> Option<String> {
+        let path = path.replace('\\', "/");
+        self.lectures
+            .iter()
+            .find(|l| path.contains(&format!("lectures/{}/", l.folder)))
+            .map(|l| l.number.clone())
+    }
+
+    /// The hints of lecture `number`: `lectures/NN-*/hints.toml`, a table of
+    /// exercise name → list of hints, mildest first.
+    pub fn hints(&self, number: &str) -> Result<BTreeMap<String, Vec<String>>, String> {
+        let lecture = self.lecture(number).ok_or_else(|| format!("there is no lecture {number}"))?;
+        let path = self.root.join("lectures").join(&lecture.folder).join("hints.toml");
+        let text = match std::fs::read_to_string(&path) {
+            Ok(text) => text,
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(BTreeMap::new()),
+            Err(e) => return Err(format!("{}: {e}", path.display())),
+        };
+        toml::from_str(&text).map_err(|e| format!("{}: {e}", path.display()))
+    }
+}
+
+/// `07` from `07-reflection-refraction` or `l07-reflection-refraction`.
+fn lecture_number(name: &str) -> Option<String> {
+    let digits = name.strip_prefix('l').unwrap_or(name);
+    let number: String = digits.chars().take(2).collect();
+    (number.len() == 2 && number.chars().all(|c| c.is_ascii_digit()) && digits[2..].starts_with('-'))
+        .then_some(number)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_lectures_and_their_dependencies_come_from_the_manifests() {
+        let ws = Workspace::open(&own_root()).unwrap();
+        assert_eq!(ws.lectures.len(), 10);
+        assert_eq!(ws.lecture("07").unwrap().package, "l07-reflection-refraction");
+        // 07 uses 05 only (its Cargo.toml and its checks' feature), so a compile error in 07
+        // costs 07, 08 (which uses 07) and 10 (which uses 08), and leaves 09 and 01–06 standing.
+        assert_eq!(ws.dependents("07"), BTreeSet::from(["07".into(), "08".into(), "10".into()]));
+        // 05's crate uses 01; its checks draw with 04's intersections, which use 01–03.
+        assert_eq!(ws.prerequisites("05"), ["01", "02", "03", "04", "05"].map(String::from).into());
+        assert_eq!(ws.lecture_of_path("/x/lectures/03-polygons-triangles/src/slabs.rs"), Some("03".into()));
+        assert_eq!(lecture_number("l10-textures-sampling"), Some("10".into()));
+        assert_eq!(lecture_number("raylab"), None);
+    }
+}
