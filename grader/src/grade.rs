@@ -79,12 +79,14 @@ pub struct Grade {
 }
 
 impl Grade {
+    /// Points scored and possible, skipped checks not counted.
     pub fn points(&self) -> (u32, u32) {
-        (self.verdicts.iter().map(|v| v.points).sum(), self.verdicts.iter().map(|v| v.info.points).sum())
+        let counted = self.verdicts.iter().filter(|v| v.status != Status::Skipped);
+        (self.verdicts.iter().map(|v| v.points).sum(), counted.map(|v| v.info.points).sum())
     }
 
     pub fn all_passed(&self) -> bool {
-        self.verdicts.iter().all(|v| v.status == Status::Passed)
+        self.verdicts.iter().all(|v| matches!(v.status, Status::Passed | Status::Skipped))
     }
 }
 
@@ -205,12 +207,12 @@ fn not_runnable(info: &Info, built: &Built, wanted: &BTreeSet<String>) -> Option
         let summary = format!("needs every lecture it draws with to compile; lecture {failed} does not");
         return Some(Verdict::blocked(info.clone(), &format!("{failed} (does not compile)"), summary));
     }
-    let summary = if wanted.len() < 10 {
-        "not graded in this run: the shaded image needs every lecture (run `cargo run -p grader`)".to_owned()
-    } else {
-        format!("not in this build of the checks ({})", pretty(&info.exercise_id()))
-    };
-    Some(Verdict::blocked(info.clone(), "the complete tracer", summary))
+    if wanted.len() < 10 {
+        let summary = "not graded in this run: the shaded image needs every lecture (run `cargo run -p grader`)";
+        return Some(Verdict::new(info.clone(), Status::Skipped, summary));
+    }
+    let summary = format!("not in this build of the checks ({})", pretty(&info.exercise_id()));
+    Some(Verdict::new(info.clone(), Status::Crashed, summary))
 }
 
 /// `raylab-checks list`.

@@ -333,3 +333,31 @@ impl<'a> Bvh<'a> {
         assert!(ids.len() >= 80, "{} exercises", ids.len());
     }
 }
+
+#[cfg(test)]
+mod hint_tests {
+    use super::*;
+    use crate::workspace::{Workspace, own_root};
+
+    /// `grader hint` reads `lectures/NN-*/hints.toml`: every exercise has
+    /// hints, and every hint names an exercise of its lecture.
+    #[test]
+    fn every_exercise_has_hints_and_every_hint_an_exercise() {
+        let root = own_root();
+        let ws = Workspace::open(&root).unwrap();
+        for lecture in &ws.lectures {
+            let mut exercises = std::collections::BTreeSet::new();
+            for file in files(&root.join("lectures").join(&lecture.folder).join("src")).unwrap() {
+                let text = std::fs::read_to_string(&file).unwrap();
+                let (_, found) = stub_solutions(&text, &lecture.number, &file.display().to_string()).unwrap();
+                exercises.extend(found.into_iter().map(|e| e.id[3..].to_owned()));
+            }
+            let hints = ws.hints(&lecture.number).unwrap();
+            let hinted: std::collections::BTreeSet<String> = hints.keys().cloned().collect();
+            assert_eq!(hinted, exercises, "lecture {}: hints.toml keys against the exercises", lecture.number);
+            for (name, list) in &hints {
+                assert!((2..=4).contains(&list.len()), "{}/{name}: {} hints", lecture.number, list.len());
+            }
+        }
+    }
+}

@@ -23,7 +23,7 @@ pub fn table(ws: &Workspace, grade: &Grade) -> String {
     for (lecture, verdicts) in &by_lecture {
         let folder = ws.lecture(lecture).map_or_else(|| lecture.to_string(), |l| l.folder.clone());
         let got: u32 = verdicts.iter().map(|v| v.points).sum();
-        let max: u32 = verdicts.iter().map(|v| v.info.points).sum();
+        let max: u32 = verdicts.iter().filter(|v| v.status != Status::Skipped).map(|v| v.info.points).sum();
         let _ = writeln!(text, "\n{folder:<width$}  {:>13}  {got:>3}/{max}", "", width = width + 2);
         let untouched = |v: &&Verdict| matches!(v.status, Status::NotStarted | Status::Blocked);
         if verdicts.iter().all(untouched) && verdicts.iter().any(|v| v.status == Status::NotStarted) {
@@ -42,11 +42,11 @@ pub fn table(ws: &Workspace, grade: &Grade) -> String {
                 "  {:<width$}  {:<13}  {:>3}/{}",
                 v.info.short(),
                 v.status.label(),
-                v.points,
+                if v.status == Status::Skipped { "-".to_owned() } else { v.points.to_string() },
                 v.info.points
             );
             match v.status {
-                Status::Passed | Status::NotStarted => {}
+                Status::Passed | Status::NotStarted | Status::Skipped => {}
                 Status::Failed => {
                     if let Some(f) = &v.failure {
                         let _ = writeln!(text, "      case:     {}", f.case);
@@ -77,7 +77,7 @@ pub fn table(ws: &Workspace, grade: &Grade) -> String {
     let _ = writeln!(
         text,
         "\ntotal {got}/{max} points: {} passed, {} failed, {} not started, {} blocked, {} do not compile, {} crashed, \
-         {} timed out ({:.1} s)",
+         {} timed out, {} skipped ({:.1} s)",
         count(Status::Passed),
         count(Status::Failed),
         count(Status::NotStarted),
@@ -85,6 +85,7 @@ pub fn table(ws: &Workspace, grade: &Grade) -> String {
         count(Status::DoesNotCompile),
         count(Status::Crashed),
         count(Status::TimedOut),
+        count(Status::Skipped),
         grade.seconds
     );
     text
@@ -143,4 +144,60 @@ pub fn gradescope(grade: &Grade) -> Value {
         "stdout_visibility": "visible",
         "tests": tests,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::verdict::{Failure, Info};
+
+    fn verdict(id: &str, status: Status, hidden: bool) -> Verdict {
+        let info = Info {
+            id: id.into(),
+            lecture: id[..2].into(),
+            exercise: id.split('/').nth(1).unwrap().into(),
+            kind: "unit".into(),
+            points: 2,
+            needs: vec![],
+            about: String::new(),
+            hidden,
+            timeout_s: 10,
+            available: true,
+        };
+        Verdict::new(info, status, "summary")
+    }
+
+    /// The fields Gradescope reads (its autograder specification): a total
+    /// `score`, and per test `name`, `score`, `max_score`, `output`, `visibility`.
+    #[test]
+    fn gradescope_results_carry_scores_outputs_and_hidden_visibility() {
+        let mut failed = verdict("02/hit_plane/unit", Status::Failed, false);
+        failed.failure = Some(Failure {
+            case: "a ray".into(),
+            expected: "t = 4".into(),
+            got: "t = 6".into(),
+            cause: "the far root".into(),
+            images: None,
+        });
+        let grade = Grade {
+            verdicts: vec![verdict("02/hit_sphere_stable/unit", Status::Passed, false), failed, verdict(
+                "02/hit_sphere_stable/hidden-off-axis",
+                Status::Passed,
+                true,
+            )],
+            compile_errors: vec![],
+            seconds: 1.0,
+        };
+        let results = gradescope(&grade);
+        assert_eq!(results["score"], 4);
+        let tests = results["tests"].as_array().unwrap();
+        assert_eq!(tests.len(), 3);
+        assert_eq!(tests[0]["name"], "02 hit_sphere_stable/unit");
+        assert_eq!((tests[0]["score"].as_u64(), tests[0]["max_score"].as_u64()), (Some(2), Some(2)));
+        assert_eq!((tests[1]["score"].as_u64(), tests[1]["status"].as_str()), (Some(0), Some("failed")));
+        let output = tests[1]["output"].as_str().unwrap();
+        assert!(output.contains("expected: t = 4") && output.contains("likely cause: the far root"), "{output}");
+        assert_eq!(tests[0]["visibility"], "visible");
+        assert_eq!(tests[2]["visibility"], "after_published");
+    }
 }

@@ -50,10 +50,13 @@ impl Meta {
         Self { exercise, name, kind: Kind::Extreme, points: 1, needs: &[], about }
     }
 
+    // INSTRUCTOR BEGIN
     /// A hidden check's name (`hidden-…`), so its id never collides with a visible one.
+    #[cfg(feature = "hidden")]
     pub const fn named_hidden(self, name: &'static str) -> Self {
         Self { name, ..self }
     }
+    // INSTRUCTOR END
 
     pub const fn points(self, points: u32) -> Self {
         Self { points, ..self }
