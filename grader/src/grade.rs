@@ -208,7 +208,8 @@ fn not_runnable(info: &Info, built: &Built, wanted: &BTreeSet<String>) -> Option
         return Some(Verdict::blocked(info.clone(), &format!("{failed} (does not compile)"), summary));
     }
     if wanted.len() < 10 {
-        let summary = "not graded in this run: the shaded image needs every lecture (run `cargo run -p grader`)";
+        let summary =
+            "not graded in this run: the shaded image needs every lecture (run `cargo run -p grader`)";
         return Some(Verdict::new(info.clone(), Status::Skipped, summary));
     }
     let summary = format!("not in this build of the checks ({})", pretty(&info.exercise_id()));

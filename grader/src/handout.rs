@@ -354,7 +354,11 @@ mod hint_tests {
             }
             let hints = ws.hints(&lecture.number).unwrap();
             let hinted: std::collections::BTreeSet<String> = hints.keys().cloned().collect();
-            assert_eq!(hinted, exercises, "lecture {}: hints.toml keys against the exercises", lecture.number);
+            assert_eq!(
+                hinted, exercises,
+                "lecture {}: hints.toml keys against the exercises",
+                lecture.number
+            );
             for (name, list) in &hints {
                 assert!((2..=4).contains(&list.len()), "{}/{name}: {} hints", lecture.number, list.len());
             }

@@ -180,11 +180,11 @@ mod tests {
             images: None,
         });
         let grade = Grade {
-            verdicts: vec![verdict("02/hit_sphere_stable/unit", Status::Passed, false), failed, verdict(
-                "02/hit_sphere_stable/hidden-off-axis",
-                Status::Passed,
-                true,
-            )],
+            verdicts: vec![
+                verdict("02/hit_sphere_stable/unit", Status::Passed, false),
+                failed,
+                verdict("02/hit_sphere_stable/hidden-off-axis", Status::Passed, true),
+            ],
             compile_errors: vec![],
             seconds: 1.0,
         };
@@ -196,7 +196,10 @@ mod tests {
         assert_eq!((tests[0]["score"].as_u64(), tests[0]["max_score"].as_u64()), (Some(2), Some(2)));
         assert_eq!((tests[1]["score"].as_u64(), tests[1]["status"].as_str()), (Some(0), Some("failed")));
         let output = tests[1]["output"].as_str().unwrap();
-        assert!(output.contains("expected: t = 4") && output.contains("likely cause: the far root"), "{output}");
+        assert!(
+            output.contains("expected: t = 4") && output.contains("likely cause: the far root"),
+            "{output}"
+        );
         assert_eq!(tests[0]["visibility"], "visible");
         assert_eq!(tests[2]["visibility"], "after_published");
     }

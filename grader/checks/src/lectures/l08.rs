@@ -1,17 +1,843 @@
-//! Lecture 08: checks being written.
+//! Lecture 08, the ray tree: the recursive tracer's colours and its two stopping rules, and the
+//! render loop around it.
 
 use crate::check::Meta;
 
-pub const CHECKS: &[Meta] = &[];
+/// What `trace` calls: the shapes of the check scenes (spheres, planes, boxes), the local
+/// shading with and without shadow rays, the offset of new rays, and lecture 07's directions.
+const TRACE_NEEDS: &[&str] = &[
+    "02/hit_sphere_stable",
+    "02/hit_plane",
+    "02/closest_hit",
+    "03/hit_box",
+    "05/shade_local",
+    "06/offset_origin",
+    "06/shade_with_shadows",
+    "07/mirror_direction",
+    "07/interface",
+    "07/refract",
+    "07/fresnel_dielectric",
+];
+
+pub const CHECKS: &[Meta] = &[
+    Meta::unit(
+        "trace_ray",
+        "by hand: a miss, a mirror, facing mirrors stopped by depth and by weight, total internal \
+         reflection, Fresnel's 4 % at normal incidence",
+    )
+    .needs(TRACE_NEEDS),
+    Meta::extreme(
+        "trace_ray",
+        "tiny-glass-sphere",
+        "rays through a glass ball of radius 10⁻⁵: each enters and finds its exit (two refracted rays) \
+         and sees the wall behind",
+    )
+    .needs(TRACE_NEEDS),
+    Meta::unit(
+        "render",
+        "each pixel is trace of 01's pixel_ray at depth 0, weight 1; one primary ray per pixel",
+    )
+    .needs(&["08/trace_ray", "01/PerspectiveCamera::generate_ray", "01/screen_coords"]),
+];
 
 #[cfg(feature = "l08")]
 pub use code::run;
 
 #[cfg(feature = "l08")]
 mod code {
-    use crate::check::CheckResult;
+    use l01_transforms::Camera;
+    use l04_quadrics_transforms::BruteForce;
+    use l08_ray_tree::{TraceSettings, World, render, trace};
+    use raylab::scene::{self, Light, LightKind, Material, Object, Shape};
+    use raylab::stats::{Counter, RayStats, measure};
+    use raylab::{Color, Float, Image, Ray, Scene, Vec3};
 
-    pub fn run(_name: &str) -> Option<CheckResult> {
-        None
+    use crate::check::{CheckResult, close, ensure, fail, vec3};
+
+    pub fn run(name: &str) -> Option<CheckResult> {
+        Some(match name {
+            "trace_ray/unit" => trace_cases(trace),
+            "trace_ray/tiny-glass-sphere" => tiny_glass_sphere(trace),
+            "render/unit" => render_cases(render),
+            _ => return None,
+        })
+    }
+
+    pub(super) type TraceFn = fn(&World, &Ray, u32, Float, &TraceSettings) -> Color;
+    pub(super) type RenderFn = fn(&World, &Camera, u32, u32, &TraceSettings) -> (Image, RayStats);
+
+    const EPS: Float = Float::EPSILON;
+
+    /// Colours by hand are sums of a few products of values at most 1: a handful of roundings,
+    /// taken in whatever order the student's code takes them. 64ε is far above that (a few ε)
+    /// and far below any mistake (the smallest one here changes a colour by 0.001).
+    const COLOR_TOL: Float = 64.0 * EPS;
+
+    pub(super) fn v(x: Float, y: Float, z: Float) -> Vec3 {
+        Vec3::new(x, y, z)
+    }
+
+    /// A scene of these objects, materials and lights, seen from (0, 0, 5) toward the origin.
+    pub(super) fn scene(
+        objects: Vec<Object>,
+        materials: Vec<Material>,
+        lights: Vec<Light>,
+        background: Color,
+        ambient: Color,
+    ) -> Scene {
+        Scene {
+            camera: scene::Camera::Perspective {
+                eye: v(0.0, 0.0, 5.0),
+                at: Vec3::ZERO,
+                up: Vec3::Y,
+                fovy: 0.8,
+            },
+            width: 16,
+            height: 12,
+            background,
+            ambient,
+            lights,
+            materials,
+            objects,
+            render: Default::default(),
+        }
+    }
+
+    pub(super) fn sphere(center: Vec3, radius: Float, material: usize) -> Object {
+        Object { shape: Shape::Sphere { center, radius }, material, transform: None }
+    }
+
+    pub(super) fn plane(normal: Vec3, offset: Float, material: usize) -> Object {
+        Object { shape: Shape::Plane { normal, offset }, material, transform: None }
+    }
+
+    pub(super) fn cuboid(min: Vec3, max: Vec3, material: usize) -> Object {
+        Object { shape: Shape::Box { min, max }, material, transform: None }
+    }
+
+    pub(super) fn matte(kd: Color) -> Material {
+        Material { diffuse: kd, ..Material::default() }
+    }
+
+    pub(super) fn mirror(kr: Float) -> Material {
+        Material { diffuse: Color::ZERO, reflective: Color::splat(kr), ..Material::default() }
+    }
+
+    pub(super) fn glass(ior: Float) -> Material {
+        Material { diffuse: Color::ZERO, transparent: Color::ONE, ior, ..Material::default() }
+    }
+
+    /// A directional light seen along the unit `toward_light`.
+    pub(super) fn directional(toward_light: Vec3, color: Color) -> Light {
+        Light { color, shadows: true, kind: LightKind::Directional { direction: -toward_light } }
+    }
+
+    /// Reflected, refracted and shadow rays counted while tracing.
+    #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+    struct Rays {
+        reflected: u64,
+        refracted: u64,
+        shadow: u64,
+    }
+
+    impl std::fmt::Display for Rays {
+        fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+            write!(f, "{} mirror, {} refracted, {} shadow rays", self.reflected, self.refracted, self.shadow)
+        }
+    }
+
+    const fn rays(reflected: u64, refracted: u64, shadow: u64) -> Rays {
+        Rays { reflected, refracted, shadow }
+    }
+
+    /// `trace` of one eye ray (depth 0, weight 1) through `s` with brute-force intersection,
+    /// and the rays it counted.
+    fn traced(trace: TraceFn, s: &Scene, ray: &Ray, settings: &TraceSettings) -> (Color, Rays) {
+        let objects = BruteForce::new(&s.objects);
+        let world = World::new(s, &objects);
+        let (color, stats) = measure(|| trace(&world, ray, 0, 1.0, settings));
+        let counted = rays(
+            stats.get(Counter::ReflectionRays),
+            stats.get(Counter::RefractionRays),
+            stats.get(Counter::ShadowRays),
+        );
+        (color, counted)
+    }
+
+    fn near(a: Color, b: Color, tolerance: Float) -> bool {
+        (a - b).abs().max_element() <= tolerance
+    }
+
+    fn same_color(
+        case: &str,
+        got: Color,
+        expected: Color,
+        tolerance: Float,
+        cause: &str,
+    ) -> Result<(), crate::check::Failure> {
+        ensure(
+            near(got, expected, tolerance),
+            case,
+            format!("{} (± {tolerance:.1e})", vec3(expected)),
+            vec3(got),
+            cause,
+        )
+    }
+
+    const BACKGROUND: Color = Color::new(0.2, 0.3, 0.4);
+
+    /// A mirror square (a thin box, front face z = −2, k_r = `kr`) in front of an eye at the
+    /// origin, and behind the eye the wall z = 3 (k_d = (0.8, 0.4, 0.2)), lit from
+    /// L = (0, 1, −1)/√2, ambient 0.1.
+    fn mirror_and_wall(kr: Float) -> Scene {
+        scene(
+            vec![cuboid(v(-1.0, -1.0, -2.1), v(1.0, 1.0, -2.0), 0), plane(Vec3::Z, 3.0, 1)],
+            vec![mirror(kr), matte(v(0.8, 0.4, 0.2))],
+            vec![directional(v(0.0, 1.0, -1.0).normalize(), Color::ONE)],
+            BACKGROUND,
+            Color::splat(0.1),
+        )
+    }
+
+    /// Two parallel mirrors x = ±1 (k_d = 0.1, k_r = `kr`), no lights, white ambient light,
+    /// and the ray from the origin along +x, bouncing between them at normal incidence.
+    fn facing_mirrors(kr: Float) -> (Scene, Ray) {
+        let material = Material { diffuse: Color::splat(0.1), ..mirror(kr) };
+        let s = scene(
+            vec![plane(Vec3::X, 1.0, 0), plane(Vec3::X, -1.0, 0)],
+            vec![material],
+            vec![],
+            BACKGROUND,
+            Color::ONE,
+        );
+        (s, Ray::new(Vec3::ZERO, Vec3::X))
+    }
+
+    /// A glass block (y from −1 to 0, η = 1.5, k_t = 1) holding a green matte tile (y from −1
+    /// to −0.8, x from 1.5 to 3), no lights, ambient ½, magenta sky, and a ray from
+    /// (0, −0.5, 0) inside the glass going up at `degrees` from the vertical.
+    fn block_with_tile(degrees: Float) -> (Scene, Ray) {
+        let s = scene(
+            vec![
+                cuboid(v(-5.0, -1.0, -5.0), v(5.0, 0.0, 5.0), 0),
+                cuboid(v(1.5, -1.0, -1.0), v(3.0, -0.8, 1.0), 1),
+            ],
+            vec![glass(1.5), matte(v(0.2, 0.6, 0.4))],
+            vec![],
+            v(1.0, 0.0, 1.0),
+            Color::splat(0.5),
+        );
+        let a = raylab::radians(degrees);
+        (s, Ray::new(v(0.0, -0.5, 0.0), v(a.sin(), a.cos(), 0.0)))
+    }
+
+    /// Unit cases with answers by hand.
+    pub(super) fn trace_cases(trace: TraceFn) -> CheckResult {
+        let settings = TraceSettings::default();
+
+        // A miss: the background, exactly, and nothing spawned.
+        let s = mirror_and_wall(1.0);
+        let case = "eye ray from the origin along +y, past a mirror and a wall (background (0.2, 0.3, 0.4))";
+        let (color, counted) = traced(trace, &s, &Ray::new(Vec3::ZERO, Vec3::Y), &settings);
+        ensure(
+            color == BACKGROUND && counted == rays(0, 0, 0),
+            case,
+            format!("{}, {}", vec3(BACKGROUND), rays(0, 0, 0)),
+            format!("{}, {counted}", vec3(color)),
+            "a ray that hits nothing sees scene.background and spawns nothing",
+        )?;
+
+        // The mirror head-on at (0, 0, −2): black, lit from behind, so its own shading is 0 and
+        // it casts no shadow ray. Its mirror ray goes straight back to the wall z = 3, normal −z:
+        // N·L = 1/√2, its shadow ray unblocked: I = k_r·k_d⊙(0.1 + 1/√2). One mirror ray, one
+        // shadow ray.
+        let wall = v(0.8, 0.4, 0.2) * (0.1 + Float::sqrt(0.5));
+        for kr in [1.0, 0.5] {
+            let s = mirror_and_wall(kr);
+            let case = format!("mirror (k_r = {kr}) head-on at z = −2, lit wall z = 3 behind the eye");
+            let (color, counted) = traced(trace, &s, &Ray::new(Vec3::ZERO, -Vec3::Z), &settings);
+            if counted.reflected == 0 {
+                return Err(fail(
+                    case,
+                    format!("{}, {}", vec3(kr * wall), rays(1, 0, 1)),
+                    format!("{}, {counted}", vec3(color)),
+                    "spawn a mirror ray when k_r ≠ 0 and its weight w·max(k_r) ≥ settings.min_weight",
+                ));
+            }
+            if kr != 1.0 && near(color, wall, COLOR_TOL) {
+                return Err(fail(
+                    case,
+                    vec3(kr * wall),
+                    vec3(color),
+                    "weight what the mirror ray sees by k_r: I += k_r ⊙ trace(mirror ray)",
+                ));
+            }
+            same_color(
+                &case,
+                color,
+                kr * wall,
+                COLOR_TOL,
+                "the mirror ray leaves from offset_origin(p, N, r, ray.origin) in mirror_direction(d, N) and \
+                 adds k_r ⊙ what it sees",
+            )?;
+        }
+
+        // Facing mirrors at normal incidence, k_r = 1: the rays of depths 1..=D are spawned and
+        // the one of depth D spawns nothing: exactly D mirror rays; each of the D + 1 hits adds
+        // k_d⊙I_a = 0.1, so I = 0.1·(D + 1).
+        let (s, ray) = facing_mirrors(1.0);
+        for depth in [0u32, 1, 2, 5] {
+            let settings = TraceSettings { max_depth: depth, ..TraceSettings::default() };
+            let case = format!("facing mirrors x = ±1 (k_r = 1), ray along +x, max_depth {depth}");
+            let (color, counted) = traced(trace, &s, &ray, &settings);
+            let n = u64::from(depth);
+            if counted.reflected != n {
+                let cause = if counted.reflected == n + 1 || counted.reflected + 1 == n {
+                    "off by one: the eye ray has depth 0 and a ray of depth max_depth spawns nothing (stop when \
+                     depth ≥ max_depth)"
+                } else {
+                    "children are traced at depth + 1, and a ray of depth ≥ max_depth spawns none"
+                };
+                return Err(fail(
+                    case,
+                    format!("{n} mirror rays"),
+                    format!("{} mirror rays", counted.reflected),
+                    cause,
+                ));
+            }
+            let expected = Color::splat(0.1 * (depth + 1) as Float);
+            same_color(
+                &case,
+                color,
+                expected,
+                COLOR_TOL,
+                "every hit adds its local shading k_d⊙I_a to what its mirror ray sees",
+            )?;
+        }
+
+        // The weight rule: k_r = 0.9, min_weight 0.01, depth out of reach: the k-th mirror ray
+        // weighs 0.9ᵏ and is spawned while 0.9ᵏ ≥ 0.01, k ≤ ln 0.01/ln 0.9 = 43.7: 43 rays
+        // (0.9⁴³ = 0.0108, 0.9⁴⁴ = 0.0097, far from the cut-off in either precision). The hits
+        // add 0.1·Σ_{k=0}^{43} 0.9ᵏ = 1 − 0.9⁴⁴. Tolerance: 44 products and sums below 1, ≤ 88ε,
+        // in any order: 256ε.
+        let (s, ray) = facing_mirrors(0.9);
+        let settings = TraceSettings { max_depth: 1000, ..TraceSettings::default() };
+        let case = "facing mirrors (k_r = 0.9), min_weight 0.01, max_depth 1000";
+        let (color, counted) = traced(trace, &s, &ray, &settings);
+        if counted.reflected != 43 {
+            let cause = match counted.reflected {
+                44 => "compare the child's weight w·max(k_r) with min_weight, not the parent's weight",
+                n if n >= 1000 => "spawn a child only when its weight w·max(k_r) ≥ settings.min_weight",
+                _ => {
+                    "pass the child its weight, weight·max(k_r), and spawn it only when that is ≥ min_weight"
+                }
+            };
+            return Err(fail(case, "43 mirror rays", format!("{} mirror rays", counted.reflected), cause));
+        }
+        let expected = (1.0 - 0.9f64.powi(44)) as Float;
+        close(
+            case,
+            color.x,
+            expected,
+            256.0 * EPS,
+            "every hit adds k_d⊙I_a, each mirror ray weighted by k_r",
+        )?;
+        // Without the weight rule the depth limit stops it.
+        let settings = TraceSettings { max_depth: 100, min_weight: 0.0, ..settings };
+        let (_, counted) = traced(trace, &s, &ray, &settings);
+        ensure(
+            counted.reflected == 100,
+            "facing mirrors (k_r = 0.9), min_weight 0, max_depth 100",
+            "100 mirror rays",
+            format!("{} mirror rays", counted.reflected),
+            "with min_weight 0 only the depth limit stops the tree",
+        )?;
+        // A black mirror spawns nothing, even with the cut-off at 0.
+        let (s, ray) = facing_mirrors(0.0);
+        let settings = TraceSettings { min_weight: 0.0, ..TraceSettings::default() };
+        let (color, counted) = traced(trace, &s, &ray, &settings);
+        ensure(
+            counted == rays(0, 0, 0) && near(color, Color::splat(0.1), COLOR_TOL),
+            "facing mirrors with k_r = 0 (black), min_weight 0",
+            format!("{}, {}", vec3(Color::splat(0.1)), rays(0, 0, 0)),
+            format!("{}, {counted}", vec3(color)),
+            "a child of weight 0 adds nothing: spawn it only when w·max(k) > 0",
+        )?;
+
+        // Total internal reflection at 60° from the normal of the glass's top face (above
+        // θ_c = arcsin(1/1.5) = 41.8°): no transmitted ray, the whole k_t = 1 goes to the mirror
+        // ray, which goes down at 60° from (0.866, 0, 0) to the tile's top y = −0.8 at
+        // x = 0.866 + 0.8·tan 60° = 2.25: the tile's k_d⊙I_a = (0.1, 0.3, 0.2), exactly.
+        let tile = v(0.2, 0.6, 0.4) * 0.5;
+        let (s, ray) = block_with_tile(60.0);
+        for fresnel in [false, true] {
+            let settings = TraceSettings { fresnel, ..TraceSettings::default() };
+            let case =
+                format!("inside glass (η = 1.5), ray up at 60° to the top face (TIR), fresnel {fresnel}");
+            let (color, counted) = traced(trace, &s, &ray, &settings);
+            if counted.refracted > 0 {
+                return Err(fail(
+                    case,
+                    format!("{}, {}", vec3(tile), rays(1, 0, 0)),
+                    format!("{}, {counted}", vec3(color)),
+                    "leaving the glass η = η_i/η_t = 1.5/1, from 07's interface(hit, ior) (back face): at 60° \
+                     that is total internal reflection",
+                ));
+            }
+            if counted.reflected == 0 {
+                return Err(fail(
+                    case,
+                    format!("{}, {}", vec3(tile), rays(1, 0, 0)),
+                    format!("{}, {counted}", vec3(color)),
+                    "under total internal reflection refract gives None: all of k_t goes to the mirror ray \
+                     (k_r' = k_r + k_t)",
+                ));
+            }
+            same_color(
+                &case,
+                color,
+                tile,
+                COLOR_TOL,
+                "the totally reflected ray carries k_r + k_t and sees the tile",
+            )?;
+        }
+        // Below the critical angle (30°: sin²θ_t = 2.25·¼ < 1) the ray leaves into the sky.
+        let (s, ray) = block_with_tile(30.0);
+        let case = "inside glass (η = 1.5), ray up at 30° to the top face (leaves into the sky)";
+        let (color, counted) = traced(trace, &s, &ray, &TraceSettings::default());
+        ensure(
+            counted == rays(0, 1, 0) && near(color, v(1.0, 0.0, 1.0), COLOR_TOL),
+            case,
+            format!("{}, {}", vec3(v(1.0, 0.0, 1.0)), rays(0, 1, 0)),
+            format!("{}, {counted}", vec3(color)),
+            "below the critical angle the transmitted ray (07's refract with interface's η) leaves the glass",
+        )?;
+
+        // Head-on into a glass block (η = 1.5, k_t = 1, k_r = 0) holding a tile, one bounce:
+        // R = ((1 − 1.5)/(1 + 1.5))² = 0.04. Without Fresnel only the transmitted ray, weight 1,
+        // sees the tile; with it, the mirror ray (0.04) sees the sky B behind the eye and the
+        // transmitted one (0.96) the tile.
+        let sky = v(1.0, 0.0, 1.0);
+        let s = scene(
+            vec![
+                cuboid(v(-5.0, -5.0, -10.0), v(5.0, 5.0, -1.0), 0),
+                cuboid(v(-1.0, -1.0, -6.0), v(1.0, 1.0, -5.0), 1),
+            ],
+            vec![glass(1.5), matte(v(0.2, 0.6, 0.4))],
+            vec![],
+            sky,
+            Color::splat(0.5),
+        );
+        let ray = Ray::new(Vec3::ZERO, -Vec3::Z);
+        let settings = TraceSettings { max_depth: 1, ..TraceSettings::default() };
+        let case = "head-on into glass (η = 1.5) holding a tile, max_depth 1, fresnel off";
+        let (color, counted) = traced(trace, &s, &ray, &settings);
+        ensure(
+            counted == rays(0, 1, 0) && near(color, tile, COLOR_TOL),
+            case,
+            format!("{}, {}", vec3(tile), rays(0, 1, 0)),
+            format!("{}, {counted}", vec3(color)),
+            "without settings.fresnel, R = 0: clear glass spawns one transmitted ray of weight k_t",
+        )?;
+        let case = "head-on into glass (η = 1.5) holding a tile, max_depth 1, fresnel on";
+        let (color, counted) = traced(trace, &s, &ray, &TraceSettings { fresnel: true, ..settings });
+        let expected = 0.04 * sky + 0.96 * tile;
+        ensure(
+            counted == rays(1, 1, 0) && near(color, expected, COLOR_TOL),
+            case,
+            format!("{}, {}", vec3(expected), rays(1, 1, 0)),
+            format!("{}, {counted}", vec3(color)),
+            "with settings.fresnel, R = fresnel_dielectric(−d·N, η_i, η_t): k_r' = k_r + R·k_t, k_t' = (1 − R)·k_t",
+        )?;
+        Ok("9 scenes".into())
+    }
+
+    /// A clear glass ball (η = 1.5) of radius 10⁻⁵ one unit in front of the eye, a matte wall
+    /// z = −3 behind it, no lights, ambient ½, black sky. Rays aimed at the ball at impact
+    /// parameters 0 to 0.9 of its radius, in four directions around it: each must enter and find
+    /// its exit (two refracted rays: a ray into a ball leaves at the angle it entered, so there
+    /// is no total internal reflection and no mirror ray without Fresnel) and then meet the
+    /// wall (bent by at most 2(arcsin 0.9 − arcsin 0.6) = 54°, still toward −z): k_d⊙I_a
+    /// exactly, whatever the bend.
+    pub(super) fn tiny_glass_sphere(trace: TraceFn) -> CheckResult {
+        let radius: Float = 1.0e-5;
+        let center = v(0.0, 0.0, -1.0);
+        let wall = v(0.8, 0.4, 0.2);
+        let s = scene(
+            vec![sphere(center, radius, 0), plane(Vec3::Z, -3.0, 1)],
+            vec![glass(1.5), matte(wall)],
+            vec![],
+            Color::ZERO,
+            Color::splat(0.5),
+        );
+        let expected = wall * 0.5;
+        let settings = TraceSettings::default();
+        let mut rays_traced = 0;
+        for b in [0.0, 0.3, 0.6, 0.9] {
+            for side in [Vec3::X, Vec3::Y, -Vec3::X, v(0.6, -0.8, 0.0)] {
+                let target = center + b * radius * side;
+                let ray = Ray::new(Vec3::ZERO, target.normalize());
+                let case = format!(
+                    "glass ball r = 1e-5 at (0, 0, −1), eye ray from the origin at {} of the radius off its \
+                     centre toward {}",
+                    b,
+                    vec3(side)
+                );
+                let (color, counted) = traced(trace, &s, &ray, &settings);
+                rays_traced += 1;
+                if counted.refracted < 2 {
+                    return Err(fail(
+                        case,
+                        format!("{}, {}", vec3(expected), rays(0, 2, 0)),
+                        format!("{}, {counted}", vec3(color)),
+                        "the ray inside missed the exit: start refracted rays at 06's offset_origin(p, N, t, \
+                         ray.origin) and search (0, ∞), no fixed epsilon (10⁻⁴ jumps across a ball of radius \
+                         10⁻⁵)",
+                    ));
+                }
+                ensure(
+                    counted == rays(0, 2, 0) && near(color, expected, COLOR_TOL),
+                    case,
+                    format!("{}, {}", vec3(expected), rays(0, 2, 0)),
+                    format!("{}, {counted}", vec3(color)),
+                    "after the exit the ray meets the wall: the ray inside must leave the ball where it \
+                     exits, not bounce inside it",
+                )?;
+            }
+        }
+        Ok(format!("{rays_traced} rays through the tiny ball, each in and out"))
+    }
+
+    /// A mirror ball, a glass ball and a matte one over a floor, lit, seen from (0, 0, 5).
+    pub(super) fn three_balls() -> Scene {
+        scene(
+            vec![
+                plane(Vec3::Y, -1.0, 0),
+                sphere(v(-1.2, 0.0, 0.0), 0.8, 1),
+                sphere(v(0.0, 0.0, 0.5), 0.6, 2),
+                sphere(v(1.2, 0.0, 0.0), 0.8, 3),
+            ],
+            vec![matte(v(0.8, 0.8, 0.6)), mirror(0.8), glass(1.5), matte(v(0.2, 0.4, 0.9))],
+            vec![directional(v(-1.0, 2.0, 1.0).normalize(), Color::ONE)],
+            v(0.3, 0.4, 0.6),
+            Color::splat(0.1),
+        )
+    }
+
+    /// A 16 × 12 render of [`three_balls`]: each pixel against `trace` of 01's `pixel_ray` at
+    /// depth 0 and weight 1 (the student's own trace and camera, checked by their own checks),
+    /// and the primary-ray count.
+    pub(super) fn render_cases(render: RenderFn) -> CheckResult {
+        let s = three_balls();
+        let (w, h) = (s.width, s.height);
+        let camera = Camera::from_scene(&s.camera, w, h).map_err(|e| {
+            fail(
+                "the camera of the check scene",
+                "a camera",
+                e.to_string(),
+                "01's PerspectiveCamera::new must accept it",
+            )
+        })?;
+        let objects = BruteForce::new(&s.objects);
+        let world = World::new(&s, &objects);
+        // Depth 2: a ray through the glass ball needs both levels to get out (in at depth 1,
+        // out at depth 2), so an eye ray traced at depth 1 shows black glass.
+        let settings = TraceSettings { max_depth: 2, ..TraceSettings::default() };
+        let case =
+            format!("render of three balls (mirror, glass, matte) over a floor, {w} × {h}, max_depth 2");
+        let (image, stats) = render(&world, &camera, w, h, &settings);
+        ensure(
+            image.width == w && image.height == h && image.pixels.len() == (w * h) as usize,
+            &case,
+            format!("a {w} × {h} image"),
+            format!("{} × {} ({} pixels)", image.width, image.height, image.pixels.len()),
+            "one pixel per (x, y), x < width, y < height",
+        )?;
+        let at = |x: u32, y: u32, depth: u32, weight: Float| {
+            trace(&world, &camera.pixel_ray(x, y, w, h), depth, weight, &settings)
+        };
+        // Each pixel against its eye ray's colour. The same ray and the same trace give the
+        // same colour; 64ε allows a student's render that rounds the ray differently.
+        for y in 0..h {
+            for x in 0..w {
+                let expected = at(x, y, 0, 1.0);
+                let got = image.get(x, y);
+                if near(got, expected, COLOR_TOL) {
+                    continue;
+                }
+                let pixel = format!("{case}: pixel ({x}, {y})");
+                let corner = camera
+                    .generate_ray(2.0 * x as Float / w as Float - 1.0, 1.0 - 2.0 * y as Float / h as Float);
+                let cause = if near(got, at(x, y, 1, 1.0), COLOR_TOL) {
+                    "the eye ray is the root of the ray tree: trace it at depth 0, not 1"
+                } else if near(got, at(x, y, 0, 0.0), COLOR_TOL) {
+                    "the eye ray has weight 1: pass 1.0 to trace"
+                } else if near(got, trace(&world, &corner, 0, 1.0, &settings), COLOR_TOL) {
+                    "trace the ray through the pixel's centre (x + ½, y + ½): camera.pixel_ray(x, y, w, h)"
+                } else if near(got, at(x, h - 1 - y, 0, 1.0), COLOR_TOL) {
+                    "pixel (0, 0) is the top-left: y grows downward, as pixel_ray takes it"
+                } else if y < w && x < h && near(got, at(y, x, 0, 1.0), COLOR_TOL) {
+                    "x is the column and y the row: image pixel (x, y) is camera.pixel_ray(x, y, width, height)"
+                } else {
+                    "each pixel is trace(world, &camera.pixel_ray(x, y, width, height), 0, 1.0, settings)"
+                };
+                return Err(fail(pixel, vec3(expected), vec3(got), cause));
+            }
+        }
+        let primary = stats.get(Counter::PrimaryRays);
+        ensure(
+            primary == u64::from(w * h),
+            &case,
+            format!("{} primary rays", w * h),
+            format!("{primary} primary rays"),
+            "count one Counter::PrimaryRays per pixel, inside the pixel closure (trace counts the other rays)",
+        )?;
+        let secondary = stats.get(Counter::ReflectionRays) + stats.get(Counter::RefractionRays);
+        ensure(
+            secondary > 0,
+            &case,
+            "the pixels' mirror and refracted rays in the statistics",
+            "none",
+            "return the statistics of render_image, which adds up what every pixel counted",
+        )?;
+        Ok(format!("{} pixels, {primary} primary rays", w * h))
+    }
+}
+
+#[cfg(all(test, feature = "l08"))]
+mod tests {
+    use super::code::*;
+    use super::*;
+    use l01_transforms::Camera;
+    use l05_shading::shade_local;
+    use l06_shadows::{ShadowSettings, Surface, offset_origin, shade_with_shadows};
+    use l07_reflection_refraction::{fresnel_dielectric, interface, mirror_direction, refract};
+    use l08_ray_tree::{TraceSettings, World, trace};
+    use raylab::render::render_image;
+    use raylab::stats::{Counter, RayStats, count};
+    use raylab::{BLACK, Color, Float, Image, Interval, Ray};
+
+    #[test]
+    fn every_declared_check_passes_on_the_reference() {
+        for meta in CHECKS {
+            let name = format!("{}/{}", meta.exercise, meta.name);
+            match run(&name) {
+                Some(Ok(detail)) => println!("{name}: {detail}"),
+                other => panic!("{name}: {other:?}"),
+            }
+        }
+    }
+
+    /// The mistakes planted in a copy of the reference tracer.
+    #[derive(Clone, Copy, PartialEq)]
+    enum Slip {
+        None,
+        /// `depth > max_depth` instead of `≥`.
+        DepthOffByOne,
+        /// No weight cut-off.
+        NoWeightRule,
+        /// The mirror ray's colour not weighted by k_r.
+        UnweightedMirror,
+        /// k_t dropped under total internal reflection.
+        TirDropped,
+        /// η = 1/ior whether entering or leaving.
+        AlwaysEntering,
+        /// The refracted ray started at p − 10⁻⁴·N.
+        FixedEpsilon,
+        /// Fresnel's R ignored.
+        NoFresnel,
+    }
+
+    /// The reference tracer, written again with `slip` planted.
+    fn planted(
+        slip: Slip,
+        world: &World,
+        ray: &Ray,
+        depth: u32,
+        weight: Float,
+        settings: &TraceSettings,
+    ) -> Color {
+        let Some(hit) = world.objects.closest_hit(ray, Interval::POSITIVE) else {
+            return world.scene.background;
+        };
+        let scene = world.scene;
+        let material = &scene.materials[hit.material];
+        let dir = ray.dir.normalize();
+        let diffuse = world.diffuse(&hit, material);
+        let mut color = if settings.shadows {
+            let surface = Surface { material, diffuse, hit, v: -dir, origin: ray.origin };
+            let shadows = ShadowSettings { mode: settings.shadow_mode, area_samples: settings.area_samples };
+            shade_with_shadows(
+                world.objects,
+                &scene.materials,
+                &surface,
+                &scene.lights,
+                scene.ambient,
+                shadows,
+            )
+        } else {
+            shade_local(material, diffuse, &hit, -dir, &scene.lights, scene.ambient)
+        };
+        let stop = if slip == Slip::DepthOffByOne {
+            depth > settings.max_depth
+        } else {
+            depth >= settings.max_depth
+        };
+        if stop {
+            return color;
+        }
+        let (mut k_r, mut k_t) = (material.reflective, material.transparent);
+        let mut refracted = None;
+        if k_t != BLACK {
+            let crossing = interface(&hit, material.ior);
+            let eta = if slip == Slip::AlwaysEntering { 1.0 / material.ior } else { crossing.eta_ratio() };
+            refracted = refract(dir, crossing.normal, eta);
+            let reflectance = match refracted {
+                None if slip == Slip::TirDropped => 0.0,
+                None => 1.0,
+                Some(_) if settings.fresnel && slip != Slip::NoFresnel => {
+                    fresnel_dielectric(-dir.dot(crossing.normal), crossing.eta_i, crossing.eta_t)
+                }
+                Some(_) => 0.0,
+            };
+            k_r += reflectance * k_t;
+            k_t *= 1.0 - reflectance;
+        }
+        let min_weight = if slip == Slip::NoWeightRule { 0.0 } else { settings.min_weight };
+        let mirror_weight = weight * k_r.max_element();
+        if mirror_weight > 0.0 && mirror_weight >= min_weight {
+            count(Counter::ReflectionRays);
+            let r = mirror_direction(dir, hit.normal);
+            let mirror = Ray::new(offset_origin(hit.point, hit.normal, r, ray.origin), r);
+            let seen = planted(slip, world, &mirror, depth + 1, mirror_weight, settings);
+            color += if slip == Slip::UnweightedMirror { seen } else { k_r * seen };
+        }
+        let through_weight = weight * k_t.max_element();
+        if let Some(t) = refracted
+            && through_weight > 0.0
+            && through_weight >= min_weight
+        {
+            count(Counter::RefractionRays);
+            let origin = if slip == Slip::FixedEpsilon {
+                hit.point - 1e-4 * hit.normal
+            } else {
+                offset_origin(hit.point, hit.normal, t, ray.origin)
+            };
+            let seen = planted(slip, world, &Ray::new(origin, t), depth + 1, through_weight, settings);
+            color += k_t * seen;
+        }
+        color
+    }
+
+    macro_rules! slipped {
+        ($($name:ident => $slip:expr),* $(,)?) => {
+            $(fn $name(w: &World, r: &Ray, d: u32, wt: Float, s: &TraceSettings) -> Color {
+                planted($slip, w, r, d, wt, s)
+            })*
+        };
+    }
+
+    slipped! {
+        no_slip => Slip::None,
+        depth_off_by_one => Slip::DepthOffByOne,
+        no_weight_rule => Slip::NoWeightRule,
+        unweighted_mirror => Slip::UnweightedMirror,
+        tir_dropped => Slip::TirDropped,
+        always_entering => Slip::AlwaysEntering,
+        fixed_epsilon => Slip::FixedEpsilon,
+        no_fresnel => Slip::NoFresnel,
+    }
+
+    fn cause_of(result: crate::check::CheckResult) -> String {
+        match result {
+            Ok(detail) => panic!("the planted mistake passed: {detail}"),
+            Err(failure) => {
+                println!(
+                    "caught: {} | expected {} | got {} | {}",
+                    failure.case, failure.expected, failure.got, failure.cause
+                );
+                failure.cause
+            }
+        }
+    }
+
+    #[test]
+    fn the_planted_copy_without_a_slip_passes() {
+        assert!(trace_cases(no_slip).is_ok(), "{:?}", trace_cases(no_slip));
+        assert!(tiny_glass_sphere(no_slip).is_ok());
+    }
+
+    #[test]
+    fn planted_tracer_mistakes_are_caught_with_their_cause() {
+        for (tracer, cause) in [
+            (depth_off_by_one as TraceFn, "off by one"),
+            (no_weight_rule, "spawn a child only when its weight"),
+            (unweighted_mirror, "weight what the mirror ray sees by k_r"),
+            (tir_dropped, "all of k_t goes to the mirror ray"),
+            (always_entering, "leaving the glass η = η_i/η_t = 1.5/1"),
+            (no_fresnel, "with settings.fresnel, R = fresnel_dielectric"),
+        ] {
+            let got = cause_of(trace_cases(tracer));
+            assert!(got.contains(cause), "expected a cause with {cause:?}, got {got:?}");
+        }
+        let got = cause_of(tiny_glass_sphere(fixed_epsilon));
+        assert!(got.contains("missed the exit"), "{got}");
+    }
+
+    /// The reference render with a slip: depth 1, weight 0, corner rays, no count, transposed.
+    fn render_with(
+        world: &World,
+        camera: &Camera,
+        w: u32,
+        h: u32,
+        s: &TraceSettings,
+        slip: u8,
+    ) -> (Image, RayStats) {
+        render_image(w, h, |x, y| {
+            if slip != 3 {
+                count(Counter::PrimaryRays);
+            }
+            let ray = match slip {
+                2 => camera
+                    .generate_ray(2.0 * x as Float / w as Float - 1.0, 1.0 - 2.0 * y as Float / h as Float),
+                4 => camera.pixel_ray(x, h - 1 - y, w, h),
+                _ => camera.pixel_ray(x, y, w, h),
+            };
+            match slip {
+                0 => trace(world, &ray, 1, 1.0, s),
+                1 => trace(world, &ray, 0, 0.0, s),
+                _ => trace(world, &ray, 0, 1.0, s),
+            }
+        })
+    }
+
+    macro_rules! render_slips {
+        ($($name:ident => $slip:expr),* $(,)?) => {
+            $(fn $name(world: &World, camera: &Camera, w: u32, h: u32, s: &TraceSettings) -> (Image, RayStats) {
+                render_with(world, camera, w, h, s, $slip)
+            })*
+        };
+    }
+
+    render_slips! {
+        depth_one => 0,
+        weight_zero => 1,
+        corner_rays => 2,
+        uncounted => 3,
+        upside_down => 4,
+    }
+
+    #[test]
+    fn planted_render_mistakes_are_caught_with_their_cause() {
+        for (render, cause) in [
+            (depth_one as RenderFn, "depth 0, not 1"),
+            (weight_zero, "weight 1"),
+            (corner_rays, "through the pixel's centre"),
+            (uncounted, "Counter::PrimaryRays per pixel"),
+            (upside_down, "top-left"),
+        ] {
+            let got = cause_of(render_cases(render));
+            assert!(got.contains(cause), "expected a cause with {cause:?}, got {got:?}");
+        }
     }
 }

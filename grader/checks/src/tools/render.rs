@@ -131,6 +131,39 @@ pub fn parse_size(s: &str) -> Result<(u32, u32), String> {
     Ok((parse(w)?, parse(h)?))
 }
 
+fn is_png(path: &std::path::Path) -> bool {
+    path.extension().is_some_and(|e| e.eq_ignore_ascii_case("png"))
+}
+
+/// A depth or normal image made viewable, for a PNG: a normal n shows as the
+/// 8-bit colour (n + 1)/2 (the usual normal-map colours), a depth as grey
+/// from light (the nearest hit) to dark (the 95th percentile of the depths,
+/// so that a plane running to the horizon does not wash out the rest);
+/// nothing hit is black either way.
+fn viewable(image: &raylab::Image, aov: Aov) -> raylab::Image {
+    use raylab::color::srgb_to_linear;
+    let mut depths: Vec<Float> =
+        image.pixels.iter().map(|c| c.x).filter(|d| *d > 0.0 && d.is_finite()).collect();
+    depths.sort_by(Float::total_cmp);
+    let near = depths.first().copied().unwrap_or(0.0);
+    let far = depths.get(depths.len() * 95 / 100).copied().unwrap_or(1.0);
+    let span = (far - near).max(Float::MIN_POSITIVE);
+    let pixels = image
+        .pixels
+        .iter()
+        .map(|&c| {
+            let shown = match aov {
+                _ if c == raylab::Color::ZERO => c,
+                Aov::Normal => (c + raylab::Color::ONE) * 0.5,
+                _ => raylab::Color::splat(1.0 - 0.85 * ((c.x - near) / span).clamp(0.0, 1.0)),
+            };
+            // The PNG stores sRGB: encode so that the file holds these values themselves.
+            shown.map(srgb_to_linear)
+        })
+        .collect();
+    raylab::Image::from_pixels(image.width, image.height, pixels)
+}
+
 pub fn render(args: &RenderArgs) -> Result<(), String> {
     let mut scene = raylab::scene::load(&args.scene).map_err(|e| e.to_string())?;
     if let Some((w, h)) = args.size {
@@ -147,6 +180,9 @@ pub fn render(args: &RenderArgs) -> Result<(), String> {
     }
     let (image, stats) = shade::render_scene(&scene, args.aov, &settings, args.sampling(&scene))?;
     let write = match args.aov {
+        Some(aov @ (Aov::Depth | Aov::Normal)) if is_png(&args.output) => {
+            viewable(&image, aov).save_png(&args.output)
+        }
         Some(Aov::Depth | Aov::Normal) => image.save_exr(&args.output),
         _ => image.save_png(&args.output),
     };
