@@ -10,6 +10,15 @@
 //!   against exact rational arithmetic;
 //! - shadow-ray origins (lecture 06): acne at coordinates 1–10⁵ and light
 //!   leaks through a tiny sphere;
+//! - refraction (lecture 07): NaNs, wrong total internal reflection and angle
+//!   errors at the critical angle ± 0.001°, where sin²θ_t rounds to 1 and at
+//!   normal incidence, against Snell's law in f64;
+//! - the refracted ray through a glass sphere of radius 10⁻⁵ (lectures 06 and
+//!   07): the exit it finds from each ray origin, against the chord in f64;
+//! - non-uniform scale to 1e-3 : 1e3 (lecture 04): normal angle by (M⁻¹)ᵀ and
+//!   by M against the cofactor matrix, and t against the f64 root;
+//! - look-at (lecture 01) with up parallel or nearly parallel to the view:
+//!   NaN bases and orthonormality error;
 //! - rendering: mean FLIP against a converged reference, against time, for
 //!   samples per pixel, ray-tree depth and weight cut-off (with their Pareto
 //!   fronts), and BVH against brute force (same pixels, less time);
@@ -24,12 +33,16 @@
 //! 2, 3, 6, 8 and 10.
 
 mod boxes;
+mod glass_sphere;
+mod look_at;
 mod offsets;
 mod pareto;
 mod plot;
 mod reference;
+mod refraction;
 mod rendering;
 mod row;
+mod scale;
 mod sphere;
 mod table;
 mod timing;
@@ -141,6 +154,14 @@ pub fn measure_all(effort: &Effort, progress: &mut dyn FnMut(&str)) -> Result<Re
     rows.extend(boxes::measure(effort));
     progress("shadow offsets");
     rows.extend(offsets::measure(effort));
+    progress("refraction");
+    rows.extend(refraction::measure(effort));
+    progress("tiny glass sphere");
+    rows.extend(glass_sphere::measure(effort));
+    progress("non-uniform scale");
+    rows.extend(scale::measure(effort));
+    progress("look-at");
+    rows.extend(look_at::measure(effort));
     progress("samples per pixel");
     rows.extend(rendering::measure_spp(effort)?);
     progress("ray-tree depth and weight");

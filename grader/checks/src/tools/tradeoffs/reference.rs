@@ -15,8 +15,27 @@ pub fn wide(v: Vec3) -> [f64; 3] {
     [to_f64(v.x), to_f64(v.y), to_f64(v.z)]
 }
 
-fn dot(u: [f64; 3], v: [f64; 3]) -> f64 {
+/// u·v in f64.
+pub fn dot(u: [f64; 3], v: [f64; 3]) -> f64 {
     u[0] * v[0] + u[1] * v[1] + u[2] * v[2]
+}
+
+/// u × v in f64.
+pub fn cross(u: [f64; 3], v: [f64; 3]) -> [f64; 3] {
+    [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]]
+}
+
+/// u / |u| in f64.
+pub fn unit(u: [f64; 3]) -> [f64; 3] {
+    let length = dot(u, u).sqrt();
+    u.map(|x| x / length)
+}
+
+/// The angle between two directions in radians, atan2(|u × v|, u·v): accurate near 0 and
+/// near π alike (acos of the dot is not), whatever their lengths; NaN when either holds a NaN.
+pub fn angle(u: [f64; 3], v: [f64; 3]) -> f64 {
+    let c = cross(u, v);
+    dot(c, c).sqrt().atan2(dot(u, v))
 }
 
 /// What the reference knows of a ray and a sphere.
@@ -114,6 +133,16 @@ mod tests {
         let truth = sphere_truth(Vec3::new(0.0, 0.0, 5.0), -Vec3::Z, Vec3::ZERO, 1.0);
         assert_eq!(truth.roots, Some((4.0, 6.0)));
         assert_eq!((truth.h2, truth.closeness), (1.0, 0.0));
+    }
+
+    #[test]
+    fn angles_between_known_directions() {
+        // Perpendicular: π/2; opposite: π; a 10⁻⁹ rad tilt, where acos(1 − 5·10⁻¹⁹) would say 0:
+        // atan2(10⁻⁹, 1) = 10⁻⁹ to f64 rounding.
+        assert_eq!(angle([1.0, 0.0, 0.0], [0.0, 3.0, 0.0]), std::f64::consts::FRAC_PI_2);
+        assert_eq!(angle([0.0, 0.0, 2.0], [0.0, 0.0, -1.0]), std::f64::consts::PI);
+        assert!((angle([1.0, 1e-9, 0.0], [1.0, 0.0, 0.0]) - 1e-9).abs() < 1e-24);
+        assert!(angle([f64::NAN, 0.0, 0.0], [1.0, 0.0, 0.0]).is_nan());
     }
 
     #[test]

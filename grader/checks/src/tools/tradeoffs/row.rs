@@ -14,6 +14,10 @@ pub enum Pair {
     Triangle,
     Box,
     Offset,
+    Refraction,
+    GlassSphere,
+    Scale,
+    LookAt,
     Spp,
     Depth,
     Weight,
@@ -22,11 +26,15 @@ pub enum Pair {
 
 impl Pair {
     /// Every pair, in the order of the report.
-    pub const ALL: [Pair; 8] = [
+    pub const ALL: [Pair; 12] = [
         Pair::Sphere,
         Pair::Triangle,
         Pair::Box,
         Pair::Offset,
+        Pair::Refraction,
+        Pair::GlassSphere,
+        Pair::Scale,
+        Pair::LookAt,
         Pair::Spp,
         Pair::Depth,
         Pair::Weight,
@@ -40,6 +48,10 @@ impl Pair {
             Pair::Triangle => "triangle",
             Pair::Box => "box",
             Pair::Offset => "offset",
+            Pair::Refraction => "refraction",
+            Pair::GlassSphere => "glass_sphere",
+            Pair::Scale => "scale",
+            Pair::LookAt => "look_at",
             Pair::Spp => "spp",
             Pair::Depth => "depth",
             Pair::Weight => "weight",
@@ -56,6 +68,17 @@ impl Pair {
             Pair::Offset => {
                 "Shadow-ray origins: scaled offset vs fixed ε on t vs fixed ε along n (lecture 06)"
             }
+            Pair::Refraction => {
+                "Refraction: lecture 07's refract vs strict TIR test vs Snell through the sines"
+            }
+            Pair::GlassSphere => {
+                "Refracted rays through a glass sphere of radius 1e-5: scaled offset vs fixed ε (lectures 06, 07)"
+            }
+            Pair::Scale => {
+                "Non-uniform scale to 1e-3 : 1e3: (M⁻¹)ᵀ vs M for normals, world t vs renormalised direction \
+                 (lecture 04)"
+            }
+            Pair::LookAt => "Look-at: lecture 01's look_at vs plain Gram–Schmidt without the parallel test",
             Pair::Spp => "Samples per pixel (lecture 10)",
             Pair::Depth => "Ray-tree depth (lecture 08)",
             Pair::Weight => "Ray-tree weight cut-off (lecture 08)",
@@ -94,6 +117,46 @@ impl Pair {
                  enter the ball; a ray that finds nothing is a light leak. Time: offset plus shadow ray. \
                  Fails: any acne, or leaks above 1 %."
             }
+            Pair::Refraction => {
+                "Unit i onto unit n, η = η_i/η_t. Critical angle: random planes and azimuths, θ_c ± 0.001° \
+                 for η = 1.33, 1.5, 2.4 (|sin²θ_t − 1| ≥ 3·10⁻⁵, far beyond rounding). Normal incidence: \
+                 i = −n for random unit n (rounding leaves |i·n| a few ε either side of 1), η from 1/2.4 to \
+                 2.4. Ground truth: Snell's law in f64 on the rounded i and n. sin²θ_t rounds to 1: \
+                 cos θ_i = k/64 and η where (η·η)(1 − cos²θ_i) is exactly 1 in the precision (lecture 07's \
+                 construction, six axis orientations): θ_t = 90°, no transmitted ray, so a returned ray along \
+                 the surface (t·n ≥ 0) is wrong. strict_tir: no clamp of cos θ_i, TIR only when sin²θ_t > 1; \
+                 via_sines: sin θ_i = √(1 − cos²θ_i) unclamped, TIR when η·sin θ_i > 1. Time: one call. \
+                 Fails: any NaN, wrong TIR decision or t·n ≥ 0, or an angle error above 1.7·10⁻³ rad (0.1°)."
+            }
+            Pair::GlassSphere => {
+                "A glass sphere (ior 1.5) of radius r = 10⁻⁵ at the origin, eyes at random directions and \
+                 distances (2–10 r, or 0.1), rays aimed within 0.95 r of the centre. Entry by lecture 02's \
+                 stable sphere, lecture 07's interface and refract; then the refracted ray starts at each \
+                 variant's origin (lecture 06) and lecture 02's sphere finds the exit. Ground truth: the same \
+                 path in f64 (the exit is the end of the chord). Wrong: no hit from inside, or an exit more \
+                 than 0.1 r from the truth. The fixed 10⁻⁴ is ten radii: it jumps past the sphere (t) or \
+                 out of it (normal). Time: offset plus exit ray. Fails: any wrong exit."
+            }
+            Pair::Scale => {
+                "The unit sphere placed by S(1e-3, 1, 1e3), alone, rotated, or moved to (5, −2, 300), and by \
+                 the milder S(0.5, 1, 2). Normals: at random points, lecture 04's normal_to_world ((M⁻¹)ᵀ from \
+                 the inverse) against M·n normalised; truth: the cofactor matrix of M (∝ (M⁻¹)ᵀ) in f64 with \
+                 error-free products. Hits: rays from 2–4 object radii aimed within 0.5 of the centre (in \
+                 object space), lecture 04's hit_transformed (lecture 02's sphere in object space) against the \
+                 same with the object-space direction renormalised (whose t is in object units); truth: the \
+                 root in f64 on the rounded ray and matrix. Time: one normal, or one hit. Fails: a normal more \
+                 than 10⁻⁴ rad off, a miss, or a relative t error above 10⁻² (the object-space origin carries \
+                 ε·|M⁻¹|·|M's translation|: 6·10⁻⁴ in f32 at (5, −2, 300) with the 1e-3 axis)."
+            }
+            Pair::LookAt => {
+                "Cameras whose up is exactly parallel to the view (views along the axes with up ± that axis, \
+                 random views with up a multiple of the view, zero up); up within δ = 10⁻³ … 3·10⁻⁶ rad of \
+                 the view (half the views within 10⁻² of −z, half random); and views near −z with up +y (eye 10⁻²–10⁻⁸ off the z axis). A camera \
+                 refused (Err) is right for a parallel up. Orthonormality error of a returned basis: the \
+                 largest of ||u|−1|, ||v|−1|, ||w|−1|, |u·v|, |v·w|, |w·u|, |u×v − w| and |w − ŵ| (ŵ the f64 \
+                 unit eye − at). gram_schmidt: w, u = up × w, v = w × u, normalised, no parallel test. Time: \
+                 one call. Fails: a NaN basis, or an orthonormality error above 10⁻⁶."
+            }
             Pair::Spp => {
                 "Lecture 10's checker-aliasing scene, jittered samples, box filter. Error: mean FLIP against \
                  the converged reference (many more jittered samples per pixel). Time: one render, both cores."
@@ -117,6 +180,7 @@ impl Pair {
     pub fn time_unit(self) -> &'static str {
         match self {
             Pair::Sphere | Pair::Triangle | Pair::Box | Pair::Offset => "ns/test",
+            Pair::Refraction | Pair::GlassSphere | Pair::Scale | Pair::LookAt => "ns/call",
             Pair::Spp | Pair::Depth | Pair::Weight | Pair::Bvh => "ms/render",
         }
     }
