@@ -385,12 +385,15 @@ fn check_image(file: &SceneFile, dir: &Path) -> CheckResult {
     }
     let cause = match geometry_difference(file, &scene) {
         Ok(Some(geometry)) => format!(
-            "the geometry differs already ({}: expected {}, got {}): fix {}/geometry/{} first",
+            "the geometry differs already ({}: expected {}, got {}): fix {} first",
             geometry.case,
             geometry.expected,
             geometry.got,
-            file.lecture,
-            file.name()
+            if has_geometry_check(&file.lecture) {
+                format!("{}/geometry/{}", file.lecture, file.name())
+            } else {
+                "the intersections and 02's object_id_image, depth_image and normal_image".to_owned()
+            }
         ),
         Ok(None) => format!("your geometry matches; {}", shading_diagnosis(&scene, &expected, &yours)),
         Err(e) => e,

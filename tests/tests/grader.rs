@@ -1,0 +1,430 @@
+//! The grader end to end, as students and instructors run it: real cargo
+//! builds, real child processes, real source patches.
+//!
+//! - the reference scores full marks;
+//! - the handout compiles and scores zero, every check "not started" or
+//!   blocked by one that is, nothing crashed;
+//! - chaos (panic, infinite loop, stack overflow, `process::exit`, a huge
+//!   allocation, a flood of output, NaN pixels, a wrong image size, a type
+//!   error) each ends in the right verdict, and a type error costs only its
+//!   lecture and those built on it;
+//! - every mistake of the catalogue (`tests/mistakes/*.toml`) fails the
+//!   check that should catch it, with the cause it should name.
+//!
+//! The patched copies are graded with `grader grade --submission` in one work
+//! folder under `target/workbench/`, kept between runs so that each patch
+//! rebuilds only its lecture.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+use std::sync::{Mutex, OnceLock};
+
+use serde_json::Value;
+
+/// The work folder is shared: its tests take turns.
+static WORK: Mutex<()> = Mutex::new(());
+
+fn root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).parent().unwrap().to_owned()
+}
+
+fn scratch() -> PathBuf {
+    let dir = root().join("target/workbench");
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+/// `cargo run -p grader` in `dir` with the tests' precision; stdout, stderr, success.
+fn cargo(dir: &Path, args: &[&str], target: Option<&Path>) -> (String, String, bool) {
+    let mut command = Command::new(std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into()));
+    command.current_dir(dir).args(args);
+    if size_of::<raylab::Float>() == 8 {
+        command.args(["--features", "raylab/f64"]);
+    }
+    if let Some(target) = target {
+        command.env("CARGO_TARGET_DIR", target);
+    }
+    let out = command.output().expect("cargo runs");
+    (
+        String::from_utf8_lossy(&out.stdout).into(),
+        String::from_utf8_lossy(&out.stderr).into(),
+        out.status.success(),
+    )
+}
+
+/// The instructor's grader, built once with the tests' precision.
+fn grader_binary() -> &'static Path {
+    static BINARY: OnceLock<PathBuf> = OnceLock::new();
+    BINARY.get_or_init(|| {
+        let (stdout, stderr, ok) =
+            cargo(&root(), &["build", "-q", "-p", "grader", "--message-format", "json"], None);
+        assert!(ok, "the grader does not build:\n{stderr}");
+        stdout
+            .lines()
+            .filter_map(|line| serde_json::from_str::<Value>(line).ok())
+            .filter(|m| m["reason"] == "compiler-artifact" && m["target"]["name"] == "grader")
+            .find_map(|m| m["executable"].as_str().map(PathBuf::from))
+            .expect("cargo names the grader's executable")
+    })
+}
+
+/// Runs the instructor's grader with `args` and reads the JSON it writes to `json`.
+fn grader(args: &[&str], json: &Path) -> (Value, String) {
+    let _ = std::fs::remove_file(json);
+    let out = Command::new(grader_binary())
+        .current_dir(root())
+        .args(args)
+        .args(["--format", "json", "-o", json.to_str().unwrap()])
+        .output()
+        .expect("the grader runs");
+    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
+    let text =
+        std::fs::read_to_string(json).unwrap_or_else(|e| panic!("no JSON from the grader ({e}):\n{stderr}"));
+    (serde_json::from_str(&text).unwrap(), stderr)
+}
+
+fn checks(grade: &Value) -> &Vec<Value> {
+    grade["checks"].as_array().expect("a list of checks")
+}
+
+fn status_of<'a>(grade: &'a Value, id: &str) -> &'a Value {
+    checks(grade).iter().find(|c| c["info"]["id"] == id).unwrap_or_else(|| panic!("no check {id}"))
+}
+
+/// A submission folder with a copy of the reference's `lectures/*/src`, each
+/// `(file, find, replace)` applied (the find text must occur exactly once).
+fn submission(name: &str, patches: &[(&str, &str, &str)]) -> PathBuf {
+    let dir = scratch().join("submissions").join(name);
+    let _ = std::fs::remove_dir_all(&dir);
+    for lecture in std::fs::read_dir(root().join("lectures")).unwrap() {
+        let lecture = lecture.unwrap().path();
+        copy_tree(&lecture.join("src"), &dir.join("lectures").join(lecture.file_name().unwrap()).join("src"));
+    }
+    for (file, find, replace) in patches {
+        let path = dir.join(file);
+        let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{file}: {e}"));
+        assert_eq!(
+            text.matches(find).count(),
+            1,
+            "{file}: the patch's text must occur exactly once: {find:?}"
+        );
+        std::fs::write(&path, text.replacen(find, replace, 1)).unwrap();
+    }
+    dir
+}
+
+fn copy_tree(from: &Path, to: &Path) {
+    std::fs::create_dir_all(to).unwrap();
+    for entry in std::fs::read_dir(from).unwrap() {
+        let path = entry.unwrap().path();
+        let target = to.join(path.file_name().unwrap());
+        if path.is_dir() {
+            copy_tree(&path, &target);
+        } else {
+            std::fs::copy(&path, &target).unwrap();
+        }
+    }
+}
+
+/// Grades `submission` in the shared work folder (hidden checks included).
+fn grade_submission(submission: &Path, select: &[&str], json_name: &str) -> (Value, String) {
+    let work = scratch().join("work");
+    let mut args =
+        vec!["grade", "--submission", submission.to_str().unwrap(), "--workdir", work.to_str().unwrap()];
+    args.extend_from_slice(select);
+    grader(&args, &scratch().join(json_name))
+}
+
+#[test]
+fn the_reference_scores_full_marks() {
+    let (grade, stderr) = grader(&["--strict"], &scratch().join("reference.json"));
+    let failing: Vec<String> = checks(&grade)
+        .iter()
+        .filter(|c| c["status"] != "passed")
+        .map(|c| format!("{} {}: {}", c["info"]["id"], c["status"], c["summary"]))
+        .collect();
+    assert!(failing.is_empty(), "{}\n{stderr}", failing.join("\n"));
+    assert_eq!(grade["score"], grade["max_score"]);
+    assert!(checks(&grade).len() >= 150, "{} checks", checks(&grade).len());
+}
+
+#[test]
+fn the_handout_compiles_and_scores_zero_without_a_crash() {
+    let dir = scratch().join("handout");
+    let out =
+        Command::new(grader_binary()).args(["handout", "--force", dir.to_str().unwrap()]).output().unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let target = scratch().join("handout-target");
+    // It compiles, tests and all, without a warning from the stubs (checked, not built: its
+    // grader below builds what it runs).
+    let (_, stderr, ok) = cargo(&dir, &["check", "--workspace", "--all-targets"], Some(&target));
+    assert!(ok, "the handout does not compile:\n{stderr}");
+    assert!(!stderr.contains("warning: unused"), "the stubs cause warnings:\n{stderr}");
+    // Its own grader: zero points, every check not started or blocked by one that is.
+    let json = scratch().join("handout.json");
+    let args = ["run", "-q", "-p", "grader", "--", "--format", "json", "-o", json.to_str().unwrap()];
+    let (_, stderr, _) = cargo(&dir, &args, Some(&target));
+    let grade: Value =
+        serde_json::from_str(&std::fs::read_to_string(&json).unwrap_or_else(|e| panic!("{e}: {stderr}")))
+            .unwrap();
+    assert_eq!(grade["score"], 0);
+    for check in checks(&grade) {
+        let status = check["status"].as_str().unwrap();
+        assert!(
+            status == "not_started"
+                || (status == "blocked" && check["summary"].as_str().unwrap().contains("not started")),
+            "{} is {status}: {}",
+            check["info"]["id"],
+            check["summary"]
+        );
+    }
+    // Every lecture has exercises marked not started, so the table tells a student where to begin.
+    for lecture in ["01", "02", "03", "04", "05", "06", "07", "08", "09", "10"] {
+        assert!(
+            checks(&grade).iter().any(|c| c["info"]["lecture"] == lecture && c["status"] == "not_started"),
+            "lecture {lecture} has no check marked not started"
+        );
+    }
+}
+
+/// One chaos case: a patch, the check it hits and how that check must end.
+struct Chaos {
+    file: &'static str,
+    /// The line the statement is inserted after (the function's signature).
+    after: &'static str,
+    insert: &'static str,
+    check: &'static str,
+    status: &'static str,
+    summary: &'static str,
+}
+
+const CHAOS: &[Chaos] = &[
+    // Each case hits an exercise the others' checks do not use, so that each verdict is its own.
+    Chaos {
+        file: "lectures/05-shading/src/area_lights.rs",
+        after: "pub fn concentric_disk(u: Vec2) -> Vec2 {\n",
+        insert: "    if u.is_finite() {\n        panic!(\"chaos: boom\");\n    }\n",
+        check: "05/concentric_disk/unit",
+        status: "crashed",
+        summary: "chaos: boom",
+    },
+    Chaos {
+        file: "lectures/07-reflection-refraction/src/fresnel.rs",
+        after: "pub fn schlick(cos_i: Float, eta_i: Float, eta_t: Float) -> Float {\n",
+        insert: "    while cos_i.is_finite() {\n        std::hint::black_box(cos_i);\n    }\n",
+        check: "07/schlick/unit",
+        status: "timed_out",
+        summary: "infinite loop",
+    },
+    Chaos {
+        file: "lectures/04-quadrics-transforms/src/parametric.rs",
+        after: "pub fn parametric_normal(ds_dalpha: Vec3, ds_dbeta: Vec3) -> Vec3 {\n",
+        insert: "    if ds_dalpha.is_finite() {\n        return std::hint::black_box(parametric_normal(std::hint::black_box(ds_dalpha), ds_dbeta));\n    }\n",
+        check: "04/parametric_normal/unit",
+        status: "crashed",
+        summary: "stack overflow",
+    },
+    Chaos {
+        file: "lectures/09-acceleration/src/aabb.rs",
+        after: "    pub fn surface_area(&self) -> Float {\n",
+        insert: "        if std::hint::black_box(true) {\n            std::process::exit(3);\n        }\n",
+        check: "09/Aabb::surface_area/unit",
+        status: "crashed",
+        summary: "exited with code 3",
+    },
+    Chaos {
+        file: "lectures/03-polygons-triangles/src/polygon.rs",
+        after: "pub fn winding_number(polygon: &[Vec2], p: Vec2) -> i32 {\n",
+        insert: "    let chaos = vec![1u8; usize::MAX >> 20];\n    std::hint::black_box(&chaos);\n",
+        check: "03/winding_number/unit",
+        status: "crashed",
+        summary: "ran out of memory",
+    },
+    Chaos {
+        file: "lectures/10-textures-sampling/src/uv.rs",
+        after: "pub fn sphere_uv(p: Vec3) -> Vec2 {\n",
+        insert: "    for _ in 0..100_000_000 {\n        println!(\"{}\", \"chaos \".repeat(100));\n    }\n",
+        check: "10/sphere_uv/unit",
+        status: "crashed",
+        summary: "printing more than",
+    },
+    Chaos {
+        file: "lectures/10-textures-sampling/src/checker.rs",
+        after: "pub fn checker(uv: Vec2, scale: Float, a: Color, b: Color) -> Color {\n",
+        insert: "    if scale.is_finite() {\n        return Color::splat(Float::NAN);\n    }\n",
+        check: "10/image/checker-aliasing-16spp",
+        status: "failed",
+        summary: "NaN",
+    },
+    Chaos {
+        file: "lectures/02-ray-casting/src/images.rs",
+        after: "pub fn normal_image(camera: &Camera, scene: &impl Intersector, width: u32, height: u32) -> Image {\n",
+        insert: "    if width > 0 {\n        return Image::new(width + 1, height);\n    }\n",
+        check: "02/geometry/spheres-on-plane",
+        status: "failed",
+        summary: "201×150",
+    },
+];
+
+#[test]
+fn chaos_ends_in_the_right_verdicts() {
+    let _turn = WORK.lock().unwrap_or_else(|e| e.into_inner());
+    let patches: Vec<(&str, &str, String)> =
+        CHAOS.iter().map(|c| (c.file, c.after, format!("{}{}", c.after, c.insert))).collect();
+    let patches: Vec<(&str, &str, &str)> = patches.iter().map(|(f, a, r)| (*f, *a, r.as_str())).collect();
+    let dir = submission("chaos", &patches);
+    let selected: Vec<&str> = CHAOS.iter().map(|c| c.check).collect();
+    let (grade, stderr) = grade_submission(&dir, &selected, "chaos.json");
+    for case in CHAOS {
+        let check = status_of(&grade, case.check);
+        let summary = check["summary"].as_str().unwrap_or_default().to_owned()
+            + check["failure"]["cause"].as_str().unwrap_or_default();
+        assert_eq!(check["status"], case.status, "{}: {summary}\n{stderr}", case.check);
+        assert!(
+            summary.contains(case.summary),
+            "{}: {summary:?} does not say {:?}",
+            case.check,
+            case.summary
+        );
+    }
+    // The report of this grade opens offline in a browser, images, ray tree and all.
+    let report = scratch().join("work/target/grader/report.html");
+    let out =
+        Command::new("python3").arg(root().join("tests/report_check.py")).arg(&report).output().unwrap();
+    let said = String::from_utf8_lossy(&out.stdout);
+    match out.status.code() {
+        Some(0) => println!("{said}"),
+        // No Chromium on this machine: said loudly; CI installs it, so there it fails.
+        Some(2) if std::env::var_os("CI").is_none() => println!("{said}"),
+        _ => panic!("the report's browser check failed:\n{said}{}", String::from_utf8_lossy(&out.stderr)),
+    }
+}
+
+#[test]
+fn a_type_error_costs_only_its_lecture_and_those_built_on_it() {
+    let _turn = WORK.lock().unwrap_or_else(|e| e.into_inner());
+    let file = "lectures/07-reflection-refraction/src/refract.rs";
+    let text = std::fs::read_to_string(root().join(file)).unwrap();
+    let signature =
+        text.lines().find(|l| l.starts_with("pub fn refract(")).expect("refract's signature").to_owned()
+            + "\n";
+    let patch = format!("{signature}    let chaos: u32 = \"not a number\";\n");
+    let dir = submission("type-error", &[(file, &signature, &patch)]);
+    let (grade, stderr) = grade_submission(&dir, &[], "type-error.json");
+    // 07 fails; 08 and 10, which use it, wait; every other lecture's unit, extreme and
+    // geometry checks are graded and pass. The shaded images of every lecture come from the
+    // complete tracer (08 with 09 and 10), so they wait for 07 too, and say so.
+    for check in checks(&grade) {
+        let (lecture, status) =
+            (check["info"]["lecture"].as_str().unwrap(), check["status"].as_str().unwrap());
+        let expected = match lecture {
+            "07" => "does_not_compile",
+            "08" | "10" => "blocked",
+            _ if check["info"]["exercise"] == "image" => {
+                assert!(check["summary"].as_str().unwrap().contains("lecture 07 does not"), "{check}");
+                "blocked"
+            }
+            _ => "passed",
+        };
+        assert_eq!(status, expected, "{}: {}\n{stderr}", check["info"]["id"], check["summary"]);
+    }
+    let error = &grade["compile_errors"][0];
+    assert_eq!(error["lecture"], "07");
+    assert!(error["location"].as_str().unwrap().starts_with(file), "{error}");
+}
+
+/// One entry of `tests/mistakes/*.toml`.
+#[derive(serde::Deserialize)]
+struct Mistake {
+    name: String,
+    file: String,
+    find: String,
+    replace: String,
+    caught_by: String,
+    cause: String,
+}
+
+#[derive(serde::Deserialize)]
+struct Catalogue {
+    mistake: Vec<Mistake>,
+}
+
+fn catalogue() -> Vec<Mistake> {
+    let dir = root().join("tests/mistakes");
+    let mut files: Vec<PathBuf> = std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().path()).collect();
+    files.sort();
+    files
+        .iter()
+        .filter(|f| f.extension().is_some_and(|e| e == "toml"))
+        .flat_map(|f| {
+            let text = std::fs::read_to_string(f).unwrap();
+            toml::from_str::<Catalogue>(&text).unwrap_or_else(|e| panic!("{}: {e}", f.display())).mistake
+        })
+        .collect()
+}
+
+#[test]
+fn the_catalogue_has_thirty_mistakes_whose_patches_apply() {
+    let mistakes = catalogue();
+    assert!(mistakes.len() >= 30, "{} mistakes catalogued", mistakes.len());
+    for m in &mistakes {
+        let text =
+            std::fs::read_to_string(root().join(&m.file)).unwrap_or_else(|e| panic!("{}: {e}", m.file));
+        assert_eq!(
+            text.matches(&m.find).count(),
+            1,
+            "{}: the find text must occur once in {}",
+            m.name,
+            m.file
+        );
+        assert_ne!(m.find, m.replace, "{}", m.name);
+    }
+}
+
+/// Each mistake applied alone, graded on the check that must catch it.
+#[test]
+fn every_catalogued_mistake_fails_the_check_that_should_catch_it() {
+    let _turn = WORK.lock().unwrap_or_else(|e| e.into_inner());
+    let mut missed = Vec::new();
+    for m in catalogue() {
+        let dir = submission("mistake", &[(&m.file, &m.find, &m.replace)]);
+        let (grade, stderr) = grade_submission(&dir, &[&m.caught_by], "mistake.json");
+        let check = status_of(&grade, &m.caught_by);
+        let said = format!(
+            "{} {}",
+            check["summary"].as_str().unwrap_or_default(),
+            check["failure"]["cause"].as_str().unwrap_or_default()
+        );
+        if check["status"] != "failed" || !said.contains(&m.cause) {
+            missed.push(format!(
+                "{}: {} is {} ({said}){}",
+                m.name,
+                m.caught_by,
+                check["status"],
+                if check["status"] == "does_not_compile" { format!("\n{stderr}") } else { String::new() }
+            ));
+        }
+    }
+    assert!(missed.is_empty(), "mistakes not caught as catalogued:\n{}", missed.join("\n"));
+}
+
+#[test]
+fn the_gradescope_bundle_has_its_scripts_and_the_pristine_workspace() {
+    let dir = scratch().join("gradescope");
+    let _ = std::fs::remove_dir_all(&dir);
+    let out = Command::new(grader_binary()).args(["gradescope", dir.to_str().unwrap()]).output().unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    for script in ["setup.sh", "run_autograder"] {
+        let path = dir.join(script);
+        let mode = std::os::unix::fs::PermissionsExt::mode(&std::fs::metadata(&path).unwrap().permissions());
+        assert_eq!(mode & 0o111, 0o111, "{script} is not executable");
+        let syntax = Command::new("bash").arg("-n").arg(&path).output().unwrap();
+        assert!(syntax.status.success(), "{script}: {}", String::from_utf8_lossy(&syntax.stderr));
+    }
+    let run = std::fs::read_to_string(dir.join("run_autograder")).unwrap();
+    assert!(run.contains("grade --submission /autograder/submission") && run.contains("results.json"));
+    // The pristine workspace, hidden checks included, no build products.
+    assert!(dir.join("source/grader/checks/src/lectures/hidden.rs").is_file());
+    assert!(dir.join("source/lectures/02-ray-casting/src/sphere.rs").is_file());
+    assert!(!dir.join("source/target").exists());
+}
