@@ -185,6 +185,57 @@ fn the_handout_compiles_and_scores_zero_without_a_crash() {
             "lecture {lecture} has no check marked not started"
         );
     }
+    watch_regrades_the_lecture_that_changes(&dir, &target);
+}
+
+/// `grader watch` in the handout: editing a file of lecture 02 re-grades lecture 02.
+fn watch_regrades_the_lecture_that_changes(dir: &Path, target: &Path) {
+    use std::io::{BufRead, BufReader};
+    use std::time::{Duration, Instant};
+    let mut command = Command::new(std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into()));
+    command.current_dir(dir).args(["run", "-q", "-p", "grader"]);
+    if size_of::<raylab::Float>() == 8 {
+        command.args(["--features", "raylab/f64"]);
+    }
+    let mut watch = command
+        .args(["--", "watch"])
+        .env("CARGO_TARGET_DIR", target)
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::null())
+        .spawn()
+        .unwrap();
+    let (sender, lines) = std::sync::mpsc::channel();
+    let stdout = watch.stdout.take().unwrap();
+    std::thread::spawn(move || {
+        for line in BufReader::new(stdout).lines().map_while(Result::ok) {
+            let _ = sender.send(line);
+        }
+    });
+    let mut seen = Vec::new();
+    let mut wait_for = |text: &str, limit: Duration| {
+        let start = Instant::now();
+        while start.elapsed() < limit {
+            if let Ok(line) = lines.recv_timeout(Duration::from_millis(200)) {
+                seen.push(line.clone());
+                if line.contains(text) {
+                    return true;
+                }
+            }
+        }
+        false
+    };
+    let started = wait_for("watching", Duration::from_secs(300));
+    let file = dir.join("lectures/02-ray-casting/src/plane.rs");
+    let text = std::fs::read_to_string(&file).unwrap();
+    std::fs::write(&file, text.clone() + "\n// An edit.\n").unwrap();
+    let regraded = started
+        && wait_for("lecture 02 changed", Duration::from_secs(30))
+        && wait_for("total ", Duration::from_secs(300));
+    let _ = watch.kill();
+    let _ = watch.wait();
+    std::fs::write(&file, text).unwrap();
+    assert!(regraded, "grader watch did not re-grade lecture 02:\n{}", seen.join("\n"));
+    assert!(seen.iter().any(|l| l.starts_with("02-ray-casting")), "{}", seen.join("\n"));
 }
 
 /// One chaos case: a patch, the check it hits and how that check must end.

@@ -212,6 +212,11 @@ pub fn wide(x: Float) -> f64 {
     f64::from(x)
 }
 
+/// `v` in f64, component by component.
+pub fn wide3(v: Vec3) -> [f64; 3] {
+    [wide(v.x), wide(v.y), wide(v.z)]
+}
+
 /// A number printed for a student: four decimals, or scientific when tiny or huge.
 pub fn num(x: Float) -> String {
     let a = x.abs();
@@ -232,6 +237,34 @@ pub fn vec3(v: Vec3) -> String {
 /// An optional value printed for a student: "no hit" for `None`.
 pub fn maybe<T>(value: &Option<T>, show: impl Fn(&T) -> String) -> String {
     value.as_ref().map_or_else(|| "None (no hit)".to_owned(), show)
+}
+
+/// What the lecture files' tests share.
+#[cfg(test)]
+pub mod testing {
+    use super::{CheckResult, Meta};
+
+    /// Asserts that a planted mistake failed its check with a cause containing `needle`.
+    pub fn caught(result: CheckResult, needle: &str) {
+        match result {
+            Ok(detail) => panic!("the planted mistake passed ({detail}); expected a cause with {needle:?}"),
+            Err(f) => {
+                assert!(f.cause.contains(needle), "cause {:?} lacks {needle:?} (case {})", f.cause, f.case)
+            }
+        }
+    }
+
+    /// Every check of a lecture's table passes on the reference, and none lacks code.
+    pub fn every_check_passes(checks: &[Meta], run: fn(&str) -> Option<CheckResult>) {
+        for meta in checks {
+            let name = format!("{}/{}", meta.exercise, meta.name);
+            match run(&name) {
+                Some(Ok(detail)) => println!("{name}: {detail}"),
+                Some(Err(failure)) => panic!("{name} fails on the reference: {failure:?}"),
+                None => panic!("{name} is declared but has no arm in run"),
+            }
+        }
+    }
 }
 
 #[cfg(test)]

@@ -80,7 +80,7 @@ pub fn winding_number(polygon: &[Vec2], p: Vec2) -> i32 {
 /// i → j = i + 1. Its length is twice the area and it points to the side from
 /// which the vertices turn counter-clockwise; it averages out small
 /// non-planarity and never depends on a choice of three vertices (which could
-/// be collinear). Zero for a degenerate polygon. Book: §3.5 The polygon's plane.
+/// be collinear). Zero for a degenerate polygon. Book: §3.5 Ray–polygon intersection.
 pub fn newell_normal(vertices: &[Vec3]) -> Vec3 {
     // SOLUTION BEGIN
     let mut n = Vec3::ZERO;

@@ -212,7 +212,7 @@ pub fn interpolate_normal(normals: &[Vec3; 3], beta: Float, gamma: Float) -> Vec
 /// the [`interpolate_normal`] one, turned to the side of the geometric
 /// normal that faces the ray (so shading never sees a normal facing away
 /// from the viewer); where the blend vanishes the geometric normal stays.
-/// uv = (β, γ). Book: §3.10 The triangle's hit record.
+/// uv = (β, γ). Book: §3.10 Interpolated normals.
 pub fn hit_triangle(
     ray: &Ray,
     vertices: &[Vec3; 3],

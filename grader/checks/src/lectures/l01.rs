@@ -1048,32 +1048,17 @@ mod tests {
     //! The checks pass on the reference, and planted mistakes (the catalogue's
     //! and a few more) fail them with the intended cause.
 
+    use crate::check::testing::caught;
+
     use l01_transforms::{CameraError, OrthographicCamera, PerspectiveCamera, rotate_axis};
     use raylab::{Float, Mat4, Ray, Vec3, Vec4, radians};
 
     use super::CHECKS;
     use super::code::*;
-    use crate::check::CheckResult;
-
-    /// Asserts that `result` failed with a cause containing `needle`.
-    fn caught(result: CheckResult, needle: &str) {
-        match result {
-            Ok(detail) => panic!("the planted mistake passed ({detail}); expected a cause with {needle:?}"),
-            Err(f) => {
-                assert!(f.cause.contains(needle), "cause {:?} lacks {needle:?} (case {})", f.cause, f.case)
-            }
-        }
-    }
 
     #[test]
     fn every_declared_check_passes_on_the_reference() {
-        for meta in CHECKS {
-            let name = format!("{}/{}", meta.exercise, meta.name);
-            match run(&name) {
-                Some(Ok(_)) => {}
-                other => panic!("{name}: {other:?}"),
-            }
-        }
+        crate::check::testing::every_check_passes(CHECKS, run);
     }
 
     #[test]

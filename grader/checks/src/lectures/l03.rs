@@ -84,6 +84,7 @@ mod code {
     use raylab::{Float, Hit, Interval, Ray, Vec2, Vec3};
 
     use crate::check::{CheckResult, Failure, close, close3, ensure, fail, maybe, num, vec3};
+    use crate::exact::exact_hits;
 
     pub fn run(name: &str) -> Option<CheckResult> {
         Some(match name {
@@ -225,46 +226,6 @@ mod code {
             ensure(got.is_none(), case, "None", show_span(&got), why)?;
         }
         Ok("4 hits and 3 misses".into())
-    }
-
-    /// An exact rational num/den, den > 0.
-    #[derive(Clone, Copy)]
-    struct Ratio(i64, i64);
-
-    impl Ratio {
-        fn le(self, o: Ratio) -> bool {
-            self.0 * o.1 <= o.0 * self.1
-        }
-    }
-
-    /// Exact reference on integer coordinates: does o + t·d meet the closed box
-    /// [lo, hi] for some t > 0? Spans as fractions, compared by cross-multiplication.
-    fn exact_hits(o: [i64; 3], d: [i64; 3], lo: [i64; 3], hi: [i64; 3]) -> bool {
-        let (mut enter, mut exit): (Option<Ratio>, Option<Ratio>) = (None, None);
-        for i in 0..3 {
-            if d[i] == 0 {
-                if o[i] < lo[i] || o[i] > hi[i] {
-                    return false;
-                }
-                continue;
-            }
-            let (near, far) = if d[i] > 0 {
-                (Ratio(lo[i] - o[i], d[i]), Ratio(hi[i] - o[i], d[i]))
-            } else {
-                (Ratio(o[i] - hi[i], -d[i]), Ratio(o[i] - lo[i], -d[i]))
-            };
-            if enter.is_none_or(|e| e.le(near)) {
-                enter = Some(near);
-            }
-            if exit.is_none_or(|x| far.le(x)) {
-                exit = Some(far);
-            }
-        }
-        let ordered = match (enter, exit) {
-            (Some(e), Some(x)) => e.le(x),
-            _ => true,
-        };
-        ordered && exit.is_none_or(|x| x.0 > 0)
     }
 
     pub(super) fn slabs_extreme(hit_slabs: SlabsFn) -> CheckResult {
@@ -1358,6 +1319,8 @@ mod tests {
     //! The checks pass on the reference, and planted mistakes (the catalogue's
     //! and a few more) fail them with the intended cause.
 
+    use crate::check::testing::caught;
+
     use std::cell::Cell;
 
     use l03_polygons_triangles::{
@@ -1370,26 +1333,10 @@ mod tests {
 
     use super::CHECKS;
     use super::code::*;
-    use crate::check::CheckResult;
-
-    fn caught(result: CheckResult, needle: &str) {
-        match result {
-            Ok(detail) => panic!("the planted mistake passed ({detail}); expected a cause with {needle:?}"),
-            Err(f) => {
-                assert!(f.cause.contains(needle), "cause {:?} lacks {needle:?} (case {})", f.cause, f.case)
-            }
-        }
-    }
 
     #[test]
     fn every_declared_check_passes_on_the_reference() {
-        for meta in CHECKS {
-            let name = format!("{}/{}", meta.exercise, meta.name);
-            match run(&name) {
-                Some(Ok(_)) => {}
-                other => panic!("{name}: {other:?}"),
-            }
-        }
+        crate::check::testing::every_check_passes(CHECKS, run);
     }
 
     /// The slab method with switches for the classic mistakes.

@@ -1079,32 +1079,18 @@ mod tests {
     //! The checks pass on the reference, and planted mistakes (the catalogue's
     //! and a few more) fail them with the intended cause.
 
+    use crate::check::testing::caught;
+
     use l04_quadrics_transforms::{first_crossing, normal_to_world, ray_to_object, slab_z_span};
     use raylab::scene::Transform;
     use raylab::{Float, Hit, Interval, Ray, Vec3};
 
     use super::CHECKS;
     use super::code::*;
-    use crate::check::CheckResult;
-
-    fn caught(result: CheckResult, needle: &str) {
-        match result {
-            Ok(detail) => panic!("the planted mistake passed ({detail}); expected a cause with {needle:?}"),
-            Err(f) => {
-                assert!(f.cause.contains(needle), "cause {:?} lacks {needle:?} (case {})", f.cause, f.case)
-            }
-        }
-    }
 
     #[test]
     fn every_declared_check_passes_on_the_reference() {
-        for meta in CHECKS {
-            let name = format!("{}/{}", meta.exercise, meta.name);
-            match run(&name) {
-                Some(Ok(_)) => {}
-                other => panic!("{name}: {other:?}"),
-            }
-        }
+        crate::check::testing::every_check_passes(CHECKS, run);
     }
 
     #[test]

@@ -875,6 +875,7 @@ mod code {
 mod tests {
     use super::CHECKS;
     use super::code::*;
+    use crate::check::testing::caught;
     use l05_shading::{
         LightSample, blinn_specular, distance_falloff, illuminate, lambert, phong_specular, reflect,
         shade_light,
@@ -884,21 +885,7 @@ mod tests {
 
     #[test]
     fn every_declared_check_passes_on_the_reference() {
-        for meta in CHECKS {
-            let name = format!("{}/{}", meta.exercise, meta.name);
-            match run(&name) {
-                Some(Ok(detail)) => println!("{name}: {detail}"),
-                Some(Err(failure)) => panic!("{name} fails on the reference: {failure:?}"),
-                None => panic!("{name} is declared but has no arm in run"),
-            }
-        }
-    }
-
-    fn caught(result: crate::check::CheckResult, cause: &str) {
-        match result {
-            Ok(detail) => panic!("the planted mistake passed: {detail}"),
-            Err(f) => assert!(f.cause.contains(cause), "expected a cause with {cause:?}, got {f:?}"),
-        }
+        crate::check::testing::every_check_passes(CHECKS, run);
     }
 
     #[test]

@@ -63,7 +63,7 @@ mod code {
     use raylab::{BLACK, Color, Float, Hit, Intersector, Interval, Ray, Vec2, Vec3, WHITE, radians};
     use std::sync::atomic::{AtomicUsize, Ordering};
 
-    use crate::check::{CheckResult, Failure, close3, ensure, num, vec3};
+    use crate::check::{CheckResult, Failure, close3, ensure, num, vec3, wide, wide3};
 
     pub fn run(name: &str) -> Option<CheckResult> {
         Some(match name {
@@ -95,16 +95,6 @@ mod code {
 
     fn v(x: Float, y: Float, z: Float) -> Vec3 {
         Vec3::new(x, y, z)
-    }
-
-    /// A `Float` in f64 (the identity in an f64 build).
-    #[allow(clippy::unnecessary_cast)]
-    fn wide(x: Float) -> f64 {
-        x as f64
-    }
-
-    fn wide3(a: Vec3) -> [f64; 3] {
-        [wide(a.x), wide(a.y), wide(a.z)]
     }
 
     /// The gap from |x| to the next float up.
@@ -1090,6 +1080,7 @@ mod code {
 mod tests {
     use super::CHECKS;
     use super::code::*;
+    use crate::check::testing::caught;
     use l05_shading::{LightSample, illuminate, sample_light, shade_light};
     use l06_shadows::{
         LIGHT_MARGIN, ShadowMode, ShadowSettings, Surface, occluded, offset_origin, point_seed,
@@ -1102,21 +1093,7 @@ mod tests {
 
     #[test]
     fn every_declared_check_passes_on_the_reference() {
-        for meta in CHECKS {
-            let name = format!("{}/{}", meta.exercise, meta.name);
-            match run(&name) {
-                Some(Ok(detail)) => println!("{name}: {detail}"),
-                Some(Err(failure)) => panic!("{name} fails on the reference: {failure:?}"),
-                None => panic!("{name} is declared but has no arm in run"),
-            }
-        }
-    }
-
-    fn caught(result: crate::check::CheckResult, cause: &str) {
-        match result {
-            Ok(detail) => panic!("the planted mistake passed: {detail}"),
-            Err(f) => assert!(f.cause.contains(cause), "expected a cause with {cause:?}, got {f:?}"),
-        }
+        crate::check::testing::every_check_passes(CHECKS, run);
     }
 
     const EPS: Float = Float::EPSILON;

@@ -45,7 +45,7 @@ mod code {
     };
     use raylab::{Float, Hit, Interval, Ray, Vec3};
 
-    use crate::check::{CheckResult, close, close3, ensure, fail, maybe, num, vec3};
+    use crate::check::{CheckResult, close, close3, ensure, fail, maybe, num, vec3, wide, wide3};
 
     pub fn run(name: &str) -> Option<CheckResult> {
         Some(match name {
@@ -69,16 +69,6 @@ mod code {
 
     fn v(x: Float, y: Float, z: Float) -> Vec3 {
         Vec3::new(x, y, z)
-    }
-
-    /// A `Float` in f64 (the identity in an f64 build).
-    #[allow(clippy::unnecessary_cast)]
-    fn wide(x: Float) -> f64 {
-        x as f64
-    }
-
-    fn wide3(a: Vec3) -> [f64; 3] {
-        [wide(a.x), wide(a.y), wide(a.z)]
     }
 
     /// cos of an angle in degrees, computed in f64 and rounded once.
@@ -689,27 +679,13 @@ mod code {
 mod tests {
     use super::CHECKS;
     use super::code::*;
+    use crate::check::testing::caught;
     use l07_reflection_refraction::{Interface, interface, refract};
     use raylab::{Float, Hit, Vec3};
 
     #[test]
     fn every_declared_check_passes_on_the_reference() {
-        for meta in CHECKS {
-            let name = format!("{}/{}", meta.exercise, meta.name);
-            match run(&name) {
-                Some(Ok(detail)) => println!("{name}: {detail}"),
-                Some(Err(failure)) => panic!("{name} fails on the reference: {failure:?}"),
-                None => panic!("{name} is declared but has no arm in run"),
-            }
-        }
-    }
-
-    /// Asserts that `result` failed with a cause containing `cause`.
-    fn caught(result: crate::check::CheckResult, cause: &str) {
-        match result {
-            Ok(detail) => panic!("the planted mistake passed: {detail}"),
-            Err(f) => assert!(f.cause.contains(cause), "expected a cause with {cause:?}, got {f:?}"),
-        }
+        crate::check::testing::every_check_passes(CHECKS, run);
     }
 
     // Planted mistakes, each as a student might write it.

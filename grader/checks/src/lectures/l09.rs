@@ -937,6 +937,7 @@ mod code {
 mod tests {
     use super::code::*;
     use super::*;
+    use crate::check::testing::caught;
     use l09_acceleration::{
         Aabb, BINS, Bin, Bvh, TRAVERSAL_COST, sah_split, sphere_bounds, transform_bounds,
     };
@@ -946,31 +947,7 @@ mod tests {
 
     #[test]
     fn every_declared_check_passes_on_the_reference() {
-        for meta in CHECKS {
-            let name = format!("{}/{}", meta.exercise, meta.name);
-            match run(&name) {
-                Some(Ok(detail)) => println!("{name}: {detail}"),
-                other => panic!("{name}: {other:?}"),
-            }
-        }
-    }
-
-    fn cause_of(result: crate::check::CheckResult) -> String {
-        match result {
-            Ok(detail) => panic!("the planted mistake passed: {detail}"),
-            Err(failure) => {
-                println!(
-                    "caught: {} | expected {} | got {} | {}",
-                    failure.case, failure.expected, failure.got, failure.cause
-                );
-                failure.cause
-            }
-        }
-    }
-
-    fn caught(result: crate::check::CheckResult, cause: &str) {
-        let got = cause_of(result);
-        assert!(got.contains(cause), "expected a cause with {cause:?}, got {got:?}");
+        crate::check::testing::every_check_passes(CHECKS, run);
     }
 
     #[test]

@@ -884,6 +884,7 @@ mod code {
 mod tests {
     use super::code::*;
     use super::*;
+    use crate::check::testing::caught;
     use l01_transforms::Camera;
     use l08_ray_tree::{TraceSettings, World, trace};
     use l10_textures_sampling::{Filter, Pattern, grid, in_stratum, pixel_rng, sample_offsets};
@@ -895,23 +896,7 @@ mod tests {
 
     #[test]
     fn every_declared_check_passes_on_the_reference() {
-        for meta in CHECKS {
-            let name = format!("{}/{}", meta.exercise, meta.name);
-            match run(&name) {
-                Some(Ok(detail)) => println!("{name}: {detail}"),
-                other => panic!("{name}: {other:?}"),
-            }
-        }
-    }
-
-    fn caught(result: crate::check::CheckResult, cause: &str) {
-        match result {
-            Ok(detail) => panic!("the planted mistake passed: {detail}"),
-            Err(f) => {
-                println!("caught: {} | expected {} | got {} | {}", f.case, f.expected, f.got, f.cause);
-                assert!(f.cause.contains(cause), "expected a cause with {cause:?}, got {:?}", f.cause);
-            }
-        }
+        crate::check::testing::every_check_passes(CHECKS, run);
     }
 
     #[test]

@@ -9,6 +9,7 @@ use raylab::{Float, Interval, Ray, Vec3};
 
 use super::row::{Pair, Row, own_precision};
 use super::timing::{Effort, time_per_item};
+pub use crate::exact::exact_hits;
 
 /// The catalogued naive box test: each of the six face planes in turn, the
 /// plane's t = (plane − oᵢ)/dᵢ, the point o + t·d, and whether that point lies
@@ -82,52 +83,6 @@ type HitBox = fn(&Ray, Vec3, Vec3, Interval) -> Option<Float>;
 /// The naive tests first, the reference method last.
 pub const VARIANTS: [(&str, HitBox); 3] =
     [("six_planes", hit_box_six_planes), ("slabs_textbook", hit_slabs_textbook), ("slabs", slabs)];
-
-/// An exact rational num/den with den > 0.
-#[derive(Clone, Copy, Debug)]
-struct Ratio(i64, i64);
-
-impl Ratio {
-    fn le(self, o: Ratio) -> bool {
-        // |values| < 2³¹ here, so the products are exact in i64.
-        self.0 * o.1 <= o.0 * self.1
-    }
-}
-
-/// Exact ground truth on integer coordinates: does o + t·d meet the closed
-/// box [lo, hi] for some t > 0? Each slab holds t in [near, far], two
-/// fractions compared by cross-multiplication; a zero dᵢ keeps the slab whole
-/// when lo ≤ oᵢ ≤ hi (an origin on a face plane included) and empty
-/// otherwise. The ray meets the box iff the latest entry ≤ the earliest exit
-/// and that exit is > 0. No rounding anywhere.
-pub fn exact_hits(o: [i64; 3], d: [i64; 3], lo: [i64; 3], hi: [i64; 3]) -> bool {
-    let mut enter: Option<Ratio> = None; // −∞
-    let mut exit: Option<Ratio> = None; // +∞
-    for i in 0..3 {
-        if d[i] == 0 {
-            if o[i] < lo[i] || o[i] > hi[i] {
-                return false;
-            }
-            continue;
-        }
-        let (near, far) = if d[i] > 0 {
-            (Ratio(lo[i] - o[i], d[i]), Ratio(hi[i] - o[i], d[i]))
-        } else {
-            (Ratio(o[i] - hi[i], -d[i]), Ratio(o[i] - lo[i], -d[i]))
-        };
-        if enter.is_none_or(|e| e.le(near)) {
-            enter = Some(near);
-        }
-        if exit.is_none_or(|x| far.le(x)) {
-            exit = Some(far);
-        }
-    }
-    let ordered = match (enter, exit) {
-        (Some(e), Some(x)) => e.le(x),
-        _ => true,
-    };
-    ordered && exit.is_none_or(|x| x.0 > 0)
-}
 
 /// One ray and box on the integer grid.
 #[derive(Clone, Copy, Debug)]
