@@ -166,6 +166,9 @@ pub fn grade(ws: &Workspace, options: &GradeOptions) -> Result<Grade, String> {
     let mut verdicts: Vec<Verdict> =
         results.into_inner().map_err(|_| "a grading thread panicked")?.into_iter().flatten().collect();
     apply_needs(&mut verdicts);
+    // Lecture by lecture (the list gives the unit checks of every lecture, then the images):
+    // the table, the report and the JSON read in the course's order.
+    verdicts.sort_by(|a, b| a.info.lecture.cmp(&b.info.lecture));
     Ok(Grade {
         verdicts,
         compile_errors: built.failed.into_iter().collect(),
