@@ -763,6 +763,17 @@ mod tests {
 
     #[test]
     fn planted_tracer_mistakes_are_caught_with_their_cause() {
+        // The planted tracers recurse in this (unoptimised) crate, to depth 100 and more without
+        // the weight rule: a test thread's 2 MB stack is too small for that in an f64 debug build.
+        std::thread::Builder::new()
+            .stack_size(256 << 20)
+            .spawn(planted_tracers)
+            .expect("a thread")
+            .join()
+            .expect("the planted tracers are caught");
+    }
+
+    fn planted_tracers() {
         for (tracer, cause) in [
             (depth_off_by_one as TraceFn, "off by one"),
             (no_weight_rule, "spawn a child only when its weight"),
