@@ -12,14 +12,33 @@ const L02: &[Meta] = &[Meta::unit(
 )
 .named_hidden("hidden-off-axis")];
 
+const L01: &[Meta] =
+    &[Meta::unit("rotate_z", "a quarter turn about z takes x to y, counter-clockwise seen from +z")
+        .named_hidden("hidden-quarter-turn")];
+
+const L03: &[Meta] =
+    &[Meta::unit("hit_slabs", "a ray along +z through an off-origin box: enter and exit t by hand")
+        .named_hidden("hidden-off-origin-box")];
+
+const L05: &[Meta] =
+    &[Meta::unit("lambert", "a 3-4-5 direction to the light, and the same light behind the surface")
+        .named_hidden("hidden-3-4-5")];
+
+const L09: &[Meta] = &[Meta::unit("Aabb::surface_area", "a 1 × 2 × 3 box away from the origin: 22 by hand")
+    .named_hidden("hidden-1-2-3-box")];
+
 const L07: &[Meta] =
     &[Meta::unit("refract", "refraction into glass at 30° and back out, against Snell's law by hand")
         .named_hidden("hidden-snell-both-ways")];
 
 pub fn lectures() -> Vec<Lecture> {
     vec![
+        Lecture { number: "01", checks: L01, run: run_if!("l01", run01), hidden: true },
         Lecture { number: "02", checks: L02, run: run_if!("l02", run02), hidden: true },
+        Lecture { number: "03", checks: L03, run: run_if!("l03", run03), hidden: true },
+        Lecture { number: "05", checks: L05, run: run_if!("l05", run05), hidden: true },
         Lecture { number: "07", checks: L07, run: run_if!("l07", run07), hidden: true },
+        Lecture { number: "09", checks: L09, run: run_if!("l09", run09), hidden: true },
     ]
 }
 
@@ -98,4 +117,92 @@ fn run07(name: &str) -> Option<crate::check::CheckResult> {
         )));
     };
     Some(close3(case, back, -i, tolerance, "Snell's law is reversible").map(|()| "2 cases".into()))
+}
+
+#[cfg(feature = "l01")]
+fn run01(name: &str) -> Option<crate::check::CheckResult> {
+    use crate::check::close3;
+    use l01_transforms::{rotate_z, transform_vector};
+    use raylab::{Float, Vec3};
+    if name != "rotate_z/hidden-quarter-turn" {
+        return None;
+    }
+    // R_z(90°) = [[0, −1, 0], [1, 0, 0], [0, 0, 1]]: x ↦ y and y ↦ −x; cos 90° rounds to ~6e-8 in f32.
+    let r = rotate_z(std::f64::consts::FRAC_PI_2 as Float);
+    let case = "rotate_z(π/2) applied to the vectors x and y";
+    let tolerance = 4.0 * Float::EPSILON;
+    let cause = "R_z(θ) = [[cos θ, −sin θ, 0], [sin θ, cos θ, 0], [0, 0, 1]]: counter-clockwise seen from +z";
+    if let Err(e) = close3(case, transform_vector(&r, Vec3::X), Vec3::Y, tolerance, cause) {
+        return Some(Err(e));
+    }
+    Some(close3(case, transform_vector(&r, Vec3::Y), -Vec3::X, tolerance, cause).map(|()| "2 cases".into()))
+}
+
+#[cfg(feature = "l03")]
+fn run03(name: &str) -> Option<crate::check::CheckResult> {
+    use crate::check::{close, fail};
+    use l03_polygons_triangles::hit_slabs;
+    use raylab::{Float, Interval, Ray, Vec3};
+    if name != "hit_slabs/hidden-off-origin-box" {
+        return None;
+    }
+    // Box [−1, 2] × [0, 3] × [1, 4]; ray from (0.5, 1, −10) along (0, 0, 2): x and y stay inside,
+    // z enters at (1 + 10)/2 = 5.5 and leaves at (4 + 10)/2 = 7.
+    let case = "box [−1, 2] × [0, 3] × [1, 4], ray from (0.5, 1, −10) along (0, 0, 2)";
+    let ray = Ray::new(Vec3::new(0.5, 1.0, -10.0), Vec3::new(0.0, 0.0, 2.0));
+    let got = hit_slabs(
+        &ray,
+        Vec3::new(-1.0, 0.0, 1.0),
+        Vec3::new(2.0, 3.0, 4.0),
+        Interval::new(0.0, Float::INFINITY),
+    );
+    let Some((enter, exit)) = got else {
+        return Some(Err(fail(case, "(5.5, 7)", "None", "x and y stay inside their slabs; only z limits t")));
+    };
+    // The exit may be widened by 1 + 2γ₃ (a few ulp of 7).
+    let tolerance = 16.0 * Float::EPSILON * 7.0;
+    let cause =
+        "t = (slab − o)/d per axis, in units of dir; enter = max of the nears, exit = min of the fars";
+    if let Err(e) = close(case, enter, 5.5, tolerance, cause) {
+        return Some(Err(e));
+    }
+    Some(close(case, exit, 7.0, tolerance, cause).map(|()| "1 case".into()))
+}
+
+#[cfg(feature = "l05")]
+fn run05(name: &str) -> Option<crate::check::CheckResult> {
+    use crate::check::close;
+    use l05_shading::lambert;
+    use raylab::{Float, Vec3};
+    if name != "lambert/hidden-3-4-5" {
+        return None;
+    }
+    // n = z, l = (0, 0.6, 0.8): cos θ = 0.8; the light mirrored behind the surface gives 0, not −0.8.
+    let n = Vec3::Z;
+    let case = "n = (0, 0, 1), l = (0, 0.6, 0.8)";
+    let tolerance = 4.0 * Float::EPSILON;
+    if let Err(e) = close(case, lambert(n, Vec3::new(0.0, 0.6, 0.8)), 0.8, tolerance, "max(n·l, 0)") {
+        return Some(Err(e));
+    }
+    let case = "n = (0, 0, 1), l = (0, 0.6, −0.8): the light behind the surface";
+    let got = lambert(n, Vec3::new(0.0, 0.6, -0.8));
+    Some(close(case, got, 0.0, 0.0, "max(n·l, 0): no negative light").map(|()| "2 cases".into()))
+}
+
+#[cfg(feature = "l09")]
+fn run09(name: &str) -> Option<crate::check::CheckResult> {
+    use crate::check::close;
+    use l09_acceleration::Aabb;
+    use raylab::{Float, Vec3};
+    if name != "Aabb::surface_area/hidden-1-2-3-box" {
+        return None;
+    }
+    // 2(1·2 + 2·3 + 3·1) = 22, wherever the box is.
+    let b = Aabb::new(Vec3::new(4.0, -1.0, 10.0), Vec3::new(5.0, 1.0, 13.0));
+    let case = "the box [4, 5] × [−1, 1] × [10, 13]";
+    let got = b.surface_area();
+    Some(
+        close(case, got, 22.0, 8.0 * Float::EPSILON * 22.0, "2(dx·dy + dy·dz + dz·dx)")
+            .map(|()| "1 case".into()),
+    )
 }
