@@ -142,7 +142,7 @@ fn main() -> ExitCode {
             Workspace::open(&workspace::own_root()).and_then(|ws| hint(&ws, &select))
         }
         Some(Cmd::Watch) => {
-            Workspace::open(&workspace::own_root()).and_then(|ws| watch::watch(&ws, options(&ws)))
+            Workspace::open(&workspace::own_root()).and_then(|ws| watch::watch(&ws, options()))
         }
         Some(Cmd::Handout { dir, force }) => {
             handout::write(&workspace::own_root(), &dir, force).map(|()| true)
@@ -170,7 +170,7 @@ fn main() -> ExitCode {
 }
 
 /// The grading options of this build of the grader, for all lectures.
-fn options(_ws: &Workspace) -> GradeOptions {
+fn options() -> GradeOptions {
     GradeOptions {
         selection: Selection::default(),
         hidden: false,
@@ -192,7 +192,7 @@ fn grade_command(
     target_dir: Option<PathBuf>,
 ) -> Result<bool, String> {
     let ws = ws.as_ref().map_err(Clone::clone)?;
-    let mut options = options(ws);
+    let mut options = options();
     options.selection = Selection::parse(&args.select)?;
     options.only_prerequisites = true;
     options.hidden = hidden;
@@ -254,7 +254,7 @@ fn hint(ws: &Workspace, select: &str) -> Result<bool, String> {
 /// Builds the checks with every lecture and runs one of its tools.
 fn forward(tool: &str, args: &[String]) -> Result<bool, String> {
     let ws = Workspace::open(&workspace::own_root())?;
-    let mut options = options(&ws);
+    let mut options = options();
     options.show_progress = true;
     let binary = match options.binary.clone() {
         Some(binary) => binary,
