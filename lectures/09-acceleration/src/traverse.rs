@@ -2,9 +2,10 @@
 //! (shadow rays), each from a fixed-size stack, allocation-free.
 
 use raylab::scene::Object;
+use raylab::stats::{Counter, count_n};
 use raylab::{Float, Hit, Intersector, Interval, Ray, Vec3};
 
-use crate::bvh::{Bvh, MAX_DEPTH};
+use crate::bvh::{Bvh, MAX_DEPTH, WIDTH};
 use crate::primitive::Primitive;
 
 /// The closest hit found so far during a traversal, with its primitive's
@@ -74,38 +75,59 @@ impl Closest {
     }
 }
 
+/// A child waiting on a traversal's stack: a node (`count == 0`) or a leaf
+/// (`count` primitives from `offset`), as a [`crate::Node`] lists its
+/// children, with the t at which the ray enters its box.
+#[derive(Clone, Copy, Debug)]
+pub struct Waiting {
+    pub offset: u32,
+    pub count: u32,
+    pub t_enter: Float,
+}
+
+/// A stack of this many [`Waiting`] children never overflows: a node visited
+/// takes one entry off and puts at most [`WIDTH`] on, and a path from the
+/// root has at most [`MAX_DEPTH`] nodes.
+pub const STACK_SIZE: usize = (WIDTH - 1) * MAX_DEPTH + 1;
+
 impl Bvh<'_> {
     /// The closest hit of `ray` with the scene inside `range`: the same hit
     /// (object, t, normal, uv, bit for bit) as 04's `BruteForce`.
     ///
     /// The unbounded objects are tested first, by brute force. Then the tree,
-    /// from the root, depth first. Where the speed comes from:
+    /// from the root. At a leaf, its primitives are tested, each hit
+    /// shrinking the range still worth searching ([`Closest::search`]). At a
+    /// node, its children's boxes are tested against that range; the
+    /// traversal goes into the nearest child met, and the others wait on a
+    /// stack ([`Waiting`]), the nearer ones on top. When a branch ends, the
+    /// next child comes off the stack, unless it starts beyond the closest
+    /// hit found since it was put there: then it is dropped unvisited, with
+    /// its whole subtree. Where the speed comes from:
     ///
-    /// - **Reciprocals once per ray.** 1/d is computed here, once, and every
-    ///   box test ([`crate::Aabb::hit`]) multiplies by it: no division.
-    /// - **Ordered traversal.** At an inner node both children's boxes are
-    ///   tested against the range still worth searching ([`Closest::search`],
-    ///   shrinking as hits come); a child the ray misses is skipped with its
-    ///   whole subtree. When both are met, the traversal goes into the one
-    ///   the ray enters first and leaves the other on the stack with its
-    ///   entry t: a close hit is found early, and when the far child comes
-    ///   off the stack it is dropped without touching its node if it starts
-    ///   beyond the closest hit by then (the same decision its box test
-    ///   would take, as only the range's max has changed).
-    /// - **Hit records only for the winner.** A leaf's mesh triangles give
-    ///   only their t ([`Primitive::triangle_t`]); the full [`Hit`] (point,
-    ///   interpolated normal, uv) is built once, for the closest, when the
-    ///   traversal ends. Whole objects (spheres, boxes, transformed meshes)
-    ///   are hit through [`Primitive::hit`] as in brute force.
-    /// - **Compact nodes** (see [`crate::Node`], 32 bytes in f32) in one flat
-    ///   array, and a tree built by the SAH (see [`Bvh::build`]).
+    /// - **Ordered traversal.** The nearest child first finds a close hit
+    ///   early, and once found, every child waiting that starts beyond it is
+    ///   dropped without a look.
+    /// - **Four boxes at once.** A node's four children are tested in four
+    ///   SIMD lanes, with what depends on the ray alone (the reciprocal
+    ///   direction 1/d: no division; the origin; the widening for rounding)
+    ///   computed once per ray; the four-wide tree has half the levels of a
+    ///   binary one.
+    /// - **Triangles ready to test.** A leaf's triangle corners sit side by
+    ///   side in [`Bvh::triangles`]; the watertight test's shear of the ray is
+    ///   computed once per ray, and only the t is found: the full [`Hit`]
+    ///   (point, interpolated normal, uv) is built once, for the closest,
+    ///   when the traversal ends. Whole objects (spheres, boxes, transformed
+    ///   meshes) are hit through [`Primitive::hit`] as in brute force.
+    /// - **Compact nodes** (see [`crate::Node`], 128 bytes) in one flat array,
+    ///   and a tree built by the SAH (see [`Bvh::build`]).
     ///
-    /// The stack is a fixed array of [`MAX_DEPTH`] entries: the build bounds
-    /// the depth, and no ray allocates. `dir` must not be zero.
-    /// Book: §9.7 Ordered traversal.
+    /// No ray allocates: a stack of [`STACK_SIZE`] entries is always enough
+    /// (the reference keeps one per thread and reuses it). `dir` must not be
+    /// zero. Book: §9.7 Ordered traversal.
     pub fn closest_hit(&self, ray: &Ray, range: Interval) -> Option<Hit> {
         debug_assert!(ray.dir != Vec3::ZERO, "the ray direction must not be zero");
         // SOLUTION BEGIN
+        use crate::fast::{BoxRay, STACK, ShearedRay};
         let mut closest = Closest::new(range);
 
         // The unbounded objects, every one.
@@ -118,88 +140,96 @@ impl Bvh<'_> {
             return closest.hit(self.objects, ray);
         }
 
-        // The tree, nearer child first, the farther ones waiting on a stack with
-        // the t at which the ray enters them.
-        let inv_dir = ray.dir.recip();
+        // The tree, from the root.
+        let (boxes, sheared) = (BoxRay::new(ray, range.min), ShearedRay::new(ray));
         let mut search = closest.search();
-        if self.nodes[0].bounds.hit(ray, inv_dir, search).is_none() {
-            return closest.hit(self.objects, ray);
-        }
-        let mut stack = [(0u32, 0.0); MAX_DEPTH];
-        let mut waiting = 0;
-        let mut current = 0u32;
-        loop {
-            let node = &self.nodes[current as usize];
-            if node.is_leaf() {
-                // A leaf: test its primitives, shrinking the range as hits come.
-                let first = node.offset as usize;
-                for &primitive in &self.primitives[first..first + node.count as usize] {
-                    if primitive.triangle != Primitive::WHOLE {
-                        // A mesh triangle: its t only, the hit record at the end.
-                        if let Some(t) = primitive.triangle_t(self.objects, ray, search) {
-                            closest.offer_triangle(t, primitive);
+        let mut triangle_tests = 0;
+        STACK.with_borrow_mut(|stack| {
+            stack.clear();
+            let mut current = Waiting { offset: 0, count: 0, t_enter: Float::NEG_INFINITY };
+            loop {
+                if current.count > 0 {
+                    // A leaf: test its primitives, shrinking the range as hits come.
+                    for i in current.offset as usize..(current.offset + current.count) as usize {
+                        let primitive = self.primitives[i];
+                        if primitive.triangle != Primitive::WHOLE {
+                            // A mesh triangle: its t only, the hit record at the end.
+                            triangle_tests += 1;
+                            if let Some(t) = sheared.hit(&self.triangles[i], search) {
+                                closest.offer_triangle(t, primitive);
+                                search = closest.search();
+                            }
+                        } else if let Some(hit) = primitive.hit(self.objects, ray, search) {
+                            closest.offer(hit, primitive.key());
                             search = closest.search();
                         }
-                    } else if let Some(hit) = primitive.hit(self.objects, ray, search) {
-                        closest.offer(hit, primitive.key());
-                        search = closest.search();
+                    }
+                } else {
+                    // A node: into the nearest child the ray meets; the others wait on
+                    // the stack, the nearer ones on top.
+                    let node = &self.nodes[current.offset as usize];
+                    let (t_enter, mut met) = node.hit_children(&boxes, search);
+                    // The met child of lowest index, taken out of `met`.
+                    let next_met = |met: &mut u32| {
+                        let i = met.trailing_zeros() as usize % WIDTH;
+                        *met &= *met - 1;
+                        Waiting { offset: node.offset[i], count: node.count[i], t_enter: t_enter[i] }
+                    };
+                    match met.count_ones() {
+                        0 => {}
+                        1 => {
+                            current = next_met(&mut met);
+                            continue;
+                        }
+                        2 => {
+                            let (a, b) = (next_met(&mut met), next_met(&mut met));
+                            let (near, far) = if b.t_enter < a.t_enter { (b, a) } else { (a, b) };
+                            stack.push(far);
+                            current = near;
+                            continue;
+                        }
+                        _ => {
+                            // Three or four: an insertion sort, the farthest at the bottom.
+                            let bottom = stack.len();
+                            while met != 0 {
+                                let child = next_met(&mut met);
+                                stack.push(child);
+                                let mut slot = stack.len() - 1;
+                                while slot > bottom && stack[slot - 1].t_enter < child.t_enter {
+                                    stack.swap(slot, slot - 1);
+                                    slot -= 1;
+                                }
+                            }
+                        }
                     }
                 }
-            } else {
-                // An inner node: test both children's boxes; go into the nearer one
-                // and leave the farther one on the stack.
-                let children = [current + 1, node.offset];
-                let a = self.nodes[children[0] as usize].bounds.hit(ray, inv_dir, search);
-                let b = self.nodes[children[1] as usize].bounds.hit(ray, inv_dir, search);
-                match (a, b) {
-                    (Some((t_a, _)), Some((t_b, _))) => {
-                        let (near, far, t_far) = if t_b < t_a {
-                            (children[1], children[0], t_a)
-                        } else {
-                            (children[0], children[1], t_b)
-                        };
-                        stack[waiting] = (far, t_far);
-                        waiting += 1;
-                        current = near;
-                        continue;
+                // The nearest child waiting that starts before the closest hit so far.
+                loop {
+                    let Some(next) = stack.pop() else { return };
+                    if next.t_enter < search.max {
+                        current = next;
+                        break;
                     }
-                    (Some(_), None) => {
-                        current = children[0];
-                        continue;
-                    }
-                    (None, Some(_)) => {
-                        current = children[1];
-                        continue;
-                    }
-                    (None, None) => {}
                 }
             }
-            // The next node waiting that the ray enters before the closest hit so far.
-            loop {
-                if waiting == 0 {
-                    return closest.hit(self.objects, ray);
-                }
-                waiting -= 1;
-                let (node, t_enter) = stack[waiting];
-                if t_enter < search.max {
-                    current = node;
-                    break;
-                }
-            }
-        }
+        });
+        count_n(Counter::IntersectionTests, triangle_tests);
+        closest.hit(self.objects, ray)
         // SOLUTION END
     }
 
     /// Whether `ray` hits anything inside `range`: true exactly when
     /// [`Bvh::closest_hit`] finds a hit, but it stops at the first one
     /// found, as a shadow ray needs no more. Unbounded objects first, then
-    /// the tree, both children's boxes tested at each inner node and the
-    /// first child met visited first, from a fixed-size stack; the range
-    /// never shrinks, and no hit record is built. `dir` must not be zero.
+    /// the tree: every child whose box the ray meets is visited, in the
+    /// order of the node's slots (with no closest hit to shrink the range,
+    /// sorting by distance saves little); the range never shrinks, and no
+    /// hit record is built. `dir` must not be zero.
     /// Book: §9.8 Any hit for shadow rays.
     pub fn any_hit(&self, ray: &Ray, range: Interval) -> bool {
         debug_assert!(ray.dir != Vec3::ZERO, "the ray direction must not be zero");
         // SOLUTION BEGIN
+        use crate::fast::{BoxRay, STACK, ShearedRay};
         // The unbounded objects.
         if self.unbounded.iter().any(|primitive| primitive.hit(self.objects, ray, range).is_some()) {
             return true;
@@ -209,53 +239,54 @@ impl Bvh<'_> {
         }
 
         // The tree, until the first blocker.
-        let inv_dir = ray.dir.recip();
-        if self.nodes[0].bounds.hit(ray, inv_dir, range).is_none() {
-            return false;
-        }
-        let mut stack = [0u32; MAX_DEPTH];
-        let mut waiting = 0;
-        let mut current = 0u32;
-        loop {
-            let node = &self.nodes[current as usize];
-            if node.is_leaf() {
-                let first = node.offset as usize;
-                let leaf = &self.primitives[first..first + node.count as usize];
-                let blocks = |primitive: &Primitive| {
-                    if primitive.triangle != Primitive::WHOLE {
-                        primitive.triangle_t(self.objects, ray, range).is_some()
-                    } else {
-                        primitive.hit(self.objects, ray, range).is_some()
+        let (boxes, sheared) = (BoxRay::new(ray, range.min), ShearedRay::new(ray));
+        let mut triangle_tests = 0;
+        let blocked = STACK.with_borrow_mut(|stack| {
+            stack.clear();
+            let mut current = Waiting { offset: 0, count: 0, t_enter: Float::NEG_INFINITY };
+            loop {
+                if current.count > 0 {
+                    for i in current.offset as usize..(current.offset + current.count) as usize {
+                        let primitive = self.primitives[i];
+                        let blocks = if primitive.triangle != Primitive::WHOLE {
+                            triangle_tests += 1;
+                            sheared.hit(&self.triangles[i], range).is_some()
+                        } else {
+                            primitive.hit(self.objects, ray, range).is_some()
+                        };
+                        if blocks {
+                            return true;
+                        }
                     }
-                };
-                if leaf.iter().any(blocks) {
-                    return true;
-                }
-            } else {
-                // Into every child whose box the ray meets, the first one first.
-                let meets =
-                    |child: u32| self.nodes[child as usize].bounds.hit(ray, inv_dir, range).map(|_| child);
-                let (a, b) = (meets(current + 1), meets(node.offset));
-                match (a, b) {
-                    (Some(first), Some(second)) => {
-                        stack[waiting] = second;
-                        waiting += 1;
-                        current = first;
+                } else {
+                    // Into the first child met, the others onto the stack.
+                    let node = &self.nodes[current.offset as usize];
+                    let (t_enter, mut met) = node.hit_children(&boxes, range);
+                    if met != 0 {
+                        let first = met.trailing_zeros() as usize % WIDTH;
+                        met &= met - 1;
+                        while met != 0 {
+                            let i = met.trailing_zeros() as usize % WIDTH;
+                            met &= met - 1;
+                            stack.push(Waiting {
+                                offset: node.offset[i],
+                                count: node.count[i],
+                                t_enter: t_enter[i],
+                            });
+                        }
+                        current =
+                            Waiting { offset: node.offset[first], count: node.count[first], t_enter: 0.0 };
                         continue;
                     }
-                    (Some(only), None) | (None, Some(only)) => {
-                        current = only;
-                        continue;
-                    }
-                    (None, None) => {}
+                }
+                match stack.pop() {
+                    Some(next) => current = next,
+                    None => return false,
                 }
             }
-            if waiting == 0 {
-                return false;
-            }
-            waiting -= 1;
-            current = stack[waiting];
-        }
+        });
+        count_n(Counter::IntersectionTests, triangle_tests);
+        blocked
         // SOLUTION END
     }
 }

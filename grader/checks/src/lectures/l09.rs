@@ -941,7 +941,7 @@ mod tests {
     use l09_acceleration::{
         Aabb, BINS, Bin, Bvh, TRAVERSAL_COST, sah_split, sphere_bounds, transform_bounds,
     };
-    use l09_acceleration::{Closest, MAX_DEPTH, Primitive};
+    use l09_acceleration::{Closest, Primitive, STACK_SIZE, WIDTH, Waiting};
     use raylab::math::gamma;
     use raylab::{Float, Hit, Interval, Ray, Vec3};
 
@@ -1125,6 +1125,8 @@ mod tests {
         best
     }
 
+    /// The children of node `i`, each visited if its box meets the ray within the range still
+    /// worth searching; returns whether any was met.
     fn visit(
         slip: u8,
         bvh: &Bvh,
@@ -1134,30 +1136,31 @@ mod tests {
         range: Interval,
         best: &mut Option<Hit>,
     ) -> bool {
-        if slip == 1 && best.is_some() {
-            return true;
-        }
         let search = |best: &Option<Hit>| {
             if slip == 1 { range } else { range.with_max(best.map_or(range.max, |h| h.t)) }
         };
         let node = &bvh.nodes[i];
-        if node.bounds.hit(ray, inv, search(best)).is_none() {
-            return false;
-        }
-        if node.is_leaf() {
-            let first = node.offset as usize;
-            for p in &bvh.primitives[first..first + node.count as usize] {
+        let mut met = false;
+        for c in (0..WIDTH).filter(|&c| !node.is_empty_slot(c)) {
+            if (slip == 1 && best.is_some()) || (slip == 3 && met) {
+                break;
+            }
+            if node.child_bounds(c).hit(ray, inv, search(best)).is_none() {
+                continue;
+            }
+            met = true;
+            if !node.is_leaf(c) {
+                visit(slip, bvh, node.offset[c] as usize, ray, inv, range, best);
+                continue;
+            }
+            let first = node.offset[c] as usize;
+            for p in &bvh.primitives[first..first + node.count[c] as usize] {
                 if let Some(h) = p.hit(bvh.objects, ray, search(best)) {
                     *best = Some(h);
                 }
             }
-            return true;
         }
-        let met = visit(slip, bvh, i + 1, ray, inv, range, best);
-        if slip == 3 && met {
-            return true;
-        }
-        visit(slip, bvh, node.offset as usize, ray, inv, range, best) || met
+        met
     }
 
     macro_rules! closest_slips {
@@ -1168,8 +1171,10 @@ mod tests {
 
     closest_slips! { closest_ok => 0, first_found => 1, no_unbounded => 2, near_only => 3, no_range => 4 }
 
-    /// A copy of the reference `Bvh::closest_hit` that drops the far child instead of pushing
-    /// it on the stack (the catalogued mistake "traversal drops the far child").
+    /// The reference `Bvh::closest_hit`'s order of visits, with 09's `Aabb::hit` for the box
+    /// tests and `Primitive::triangle_t` for the triangles, that drops the far child when a
+    /// node has two children met instead of putting it on the stack (the catalogued mistake
+    /// "traversal drops the far child").
     fn drop_far_child(bvh: &Bvh, ray: &Ray, range: Interval) -> Option<Hit> {
         let mut closest = Closest::new(range);
         for &primitive in &bvh.unbounded {
@@ -1182,17 +1187,12 @@ mod tests {
         }
         let inv_dir = ray.dir.recip();
         let mut search = closest.search();
-        if bvh.nodes[0].bounds.hit(ray, inv_dir, search).is_none() {
-            return closest.hit(bvh.objects, ray);
-        }
-        let stack = [(0u32, 0.0); MAX_DEPTH];
-        let mut waiting = 0;
-        let mut current = 0u32;
+        let mut stack: Vec<Waiting> = Vec::with_capacity(STACK_SIZE);
+        let mut current = Waiting { offset: 0, count: 0, t_enter: Float::NEG_INFINITY };
         loop {
-            let node = &bvh.nodes[current as usize];
-            if node.is_leaf() {
-                let first = node.offset as usize;
-                for &primitive in &bvh.primitives[first..first + node.count as usize] {
+            if current.count > 0 {
+                let first = current.offset as usize;
+                for &primitive in &bvh.primitives[first..first + current.count as usize] {
                     if primitive.triangle != Primitive::WHOLE {
                         if let Some(t) = primitive.triangle_t(bvh.objects, ray, search) {
                             closest.offer_triangle(t, primitive);
@@ -1204,39 +1204,32 @@ mod tests {
                     }
                 }
             } else {
-                let children = [current + 1, node.offset];
-                let a = bvh.nodes[children[0] as usize].bounds.hit(ray, inv_dir, search);
-                let b = bvh.nodes[children[1] as usize].bounds.hit(ray, inv_dir, search);
-                match (a, b) {
-                    (Some((t_a, _)), Some((t_b, _))) => {
-                        let (near, far, t_far) = if t_b < t_a {
-                            (children[1], children[0], t_a)
-                        } else {
-                            (children[0], children[1], t_b)
-                        };
-                        let _ = (far, t_far);
-                        current = near;
+                let node = &bvh.nodes[current.offset as usize];
+                let mut met: Vec<Waiting> = (0..WIDTH)
+                    .filter_map(|c| {
+                        let (t_enter, _) = node.child_bounds(c).hit(ray, inv_dir, search)?;
+                        Some(Waiting { offset: node.offset[c], count: node.count[c], t_enter })
+                    })
+                    .collect();
+                met.sort_by(|a, b| b.t_enter.total_cmp(&a.t_enter));
+                match met.len() {
+                    0 => {}
+                    2 => {
+                        // The slip: the far one is not put on the stack.
+                        current = met[1];
                         continue;
                     }
-                    (Some(_), None) => {
-                        current = children[0];
+                    _ => {
+                        stack.extend(met);
+                        current = stack.pop().unwrap_or(current);
                         continue;
                     }
-                    (None, Some(_)) => {
-                        current = children[1];
-                        continue;
-                    }
-                    (None, None) => {}
                 }
             }
             loop {
-                if waiting == 0 {
-                    return closest.hit(bvh.objects, ray);
-                }
-                waiting -= 1;
-                let (node, t_enter) = stack[waiting];
-                if t_enter < search.max {
-                    current = node;
+                let Some(next) = stack.pop() else { return closest.hit(bvh.objects, ray) };
+                if next.t_enter < search.max {
+                    current = next;
                     break;
                 }
             }
