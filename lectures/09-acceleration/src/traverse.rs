@@ -1,5 +1,5 @@
-//! Traversing the hierarchy: the closest hit (shadow-free rays) and any hit
-//! (shadow rays), each from a fixed-size stack, allocation-free.
+//! Traversing the hierarchy: the closest hit (camera, reflected and refracted
+//! rays) and any hit (shadow rays), each from a stack of children waiting.
 
 use raylab::scene::Object;
 use raylab::stats::{Counter, count_n};
