@@ -32,11 +32,11 @@ impl Node {
     /// for; `range.max` may shrink.
     ///
     /// The slab method with everything that depends on the ray alone
-    /// computed once per ray ([`BoxRay`]): which plane of each axis the ray
-    /// enters by, the reciprocal direction with the widening folded in, the
-    /// origin. Per axis, two subtractions and two multiplications of four
-    /// lanes; then the latest entry and the earliest exit, each a max or min
-    /// of four, taken two by two, and a lane is met when it enters before it
+    /// computed once per ray ([`BoxRay`]): the reciprocal direction for each
+    /// plane with the widening folded in, and the origin. Per axis, two
+    /// subtractions, two multiplications, a min and a max of four lanes; then
+    /// the latest entry and the earliest exit, each a max or min of four,
+    /// taken two by two, and a lane is met when it enters before it
     /// leaves (strictly: an empty slot, at +∞, enters and leaves at +∞; a
     /// flat box still spans the width of the widening, unless at t = 0, where
     /// no range holds a hit). Conservative like [`crate::Aabb::hit`]:
@@ -105,8 +105,7 @@ impl BoxRay {
     /// The per-ray part of the box tests of `ray` (`dir` not zero) for
     /// ranges starting at `range_min`.
     pub fn new(ray: &Ray, range_min: Float) -> Self {
-        let folded = range_min >= 0.0;
-        let widen_each = !folded;
+        let widen_each = !(range_min >= 0.0 && range_min.is_finite());
         let (down, up) = if widen_each { (1.0, 1.0) } else { (WIDEN_DOWN, WIDEN_UP) };
         let mut prepared = BoxRay {
             origin_min: [Vec4::ZERO; 3],
