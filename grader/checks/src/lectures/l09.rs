@@ -757,8 +757,8 @@ mod code {
                 let cause = if plane {
                     "test bvh.unbounded (planes) on every ray too: they are not in the tree"
                 } else {
-                    "keep searching after a hit: push the far child on the stack and visit it unless it starts \
-                     beyond the closest hit so far, shrinking the range to each hit"
+                    "keep searching after a hit: push the farther children met on the stack and visit each \
+                     unless it starts beyond the closest hit so far, shrinking the range to each hit"
                 };
                 Err(fail(case, show_hit(&expected), show_hit(&got), cause))
             }
@@ -767,7 +767,8 @@ mod code {
                 let cause = if plane {
                     "test bvh.unbounded (planes) on every ray too: they are not in the tree"
                 } else {
-                    "a node's box met by the ray must be visited: push the far child on the stack, do not drop it"
+                    "every child whose box the ray meets must be visited: push the farther children met on the \
+                     stack, do not drop them"
                 };
                 Err(fail(case, show_hit(&expected), show_hit(&got), cause))
             }
@@ -792,8 +793,8 @@ mod code {
             (
                 Interval::POSITIVE,
                 Some((49, 1.5)),
-                "the closest hit, not the first found: visit every child whose box the ray meets (push the far \
-                 one on the stack), keep the nearest hit and shrink the range to it",
+                "the closest hit, not the first found: visit every child whose box the ray meets (push the farther \
+                 ones on the stack), keep the nearest hit and shrink the range to it",
             ),
             (
                 Interval::new(10.0, Float::INFINITY),
