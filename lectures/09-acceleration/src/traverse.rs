@@ -44,17 +44,19 @@ impl Closest {
 
     /// Keeps `hit`, of the primitive with `key`, if it is nearer than the
     /// closest so far, or as near and first in the scene's order.
-    pub fn offer(&mut self, hit: Hit, key: u64) {
-        self.keep(hit.t, key, Found::Hit(hit));
+    /// Returns whether it was kept.
+    pub fn offer(&mut self, hit: Hit, key: u64) -> bool {
+        self.keep(hit.t, key, Found::Hit(hit))
     }
 
     /// Keeps the mesh-triangle `primitive`, hit at `t` (by
-    /// [`Primitive::triangle_t`]), on the same terms as [`Closest::offer`].
-    pub fn offer_triangle(&mut self, t: Float, primitive: Primitive) {
-        self.keep(t, primitive.key(), Found::Triangle(primitive));
+    /// [`Primitive::triangle_t`]), on the same terms as [`Closest::offer`];
+    /// returns whether it was kept.
+    pub fn offer_triangle(&mut self, t: Float, primitive: Primitive) -> bool {
+        self.keep(t, primitive.key(), Found::Triangle(primitive))
     }
 
-    fn keep(&mut self, t: Float, key: u64, found: Found) {
+    fn keep(&mut self, t: Float, key: u64, found: Found) -> bool {
         let better = match self.found {
             None => true,
             Some((best_t, best_key, _)) => t < best_t || (t == best_t && key < best_key),
@@ -62,6 +64,7 @@ impl Closest {
         if better {
             self.found = Some((t, key, found));
         }
+        better
     }
 
     /// The closest hit of `ray` with the scene `objects`, its record built now
@@ -114,9 +117,9 @@ impl Bvh<'_> {
     ///   binary one.
     /// - **Triangles ready to test.** A leaf's triangle corners sit side by
     ///   side in [`Bvh::triangles`]; the watertight test's shear of the ray is
-    ///   computed once per ray, and only the t is found: the full [`Hit`]
-    ///   (point, interpolated normal, uv) is built once, for the closest,
-    ///   when the traversal ends. Whole objects (spheres, boxes, transformed
+    ///   computed once per ray, and only t, β and γ are found: the full
+    ///   [`Hit`] (point, interpolated normal, uv) is built once, for the
+    ///   closest, when the traversal ends. Whole objects (spheres, boxes, transformed
     ///   meshes) are hit through [`Primitive::hit`] as in brute force.
     /// - **Compact nodes** (see [`crate::Node`], 128 bytes) in one flat array,
     ///   and a tree built by the SAH (see [`Bvh::build`]).
@@ -127,7 +130,7 @@ impl Bvh<'_> {
     pub fn closest_hit(&self, ray: &Ray, range: Interval) -> Option<Hit> {
         debug_assert!(ray.dir != Vec3::ZERO, "the ray direction must not be zero");
         // SOLUTION BEGIN
-        use crate::fast::{BoxRay, STACK, ShearedRay};
+        use crate::fast::{BoxRay, STACK, ShearedRay, triangle_record};
         let mut closest = Closest::new(range);
 
         // The unbounded objects, every one.
@@ -144,6 +147,9 @@ impl Bvh<'_> {
         let (boxes, sheared) = (BoxRay::new(ray, range.min), ShearedRay::new(ray));
         let mut search = closest.search();
         let mut triangle_tests = 0;
+        // The closest hit's triangle while it is one: its place in the leaves' order
+        // and the watertight test's result, from which its hit record is built.
+        let mut triangle = None;
         STACK.with_borrow_mut(|stack| {
             stack.clear();
             let mut current = Waiting { offset: 0, count: 0, t_enter: Float::NEG_INFINITY };
@@ -155,12 +161,16 @@ impl Bvh<'_> {
                         if primitive.triangle != Primitive::WHOLE {
                             // A mesh triangle: its t only, the hit record at the end.
                             triangle_tests += 1;
-                            if let Some(t) = sheared.hit(&self.triangles[i], search) {
-                                closest.offer_triangle(t, primitive);
+                            if let Some(found) = sheared.hit(&self.triangles[i], search) {
+                                if closest.offer_triangle(found.t, primitive) {
+                                    triangle = Some((i, found));
+                                }
                                 search = closest.search();
                             }
                         } else if let Some(hit) = primitive.hit(self.objects, ray, search) {
-                            closest.offer(hit, primitive.key());
+                            if closest.offer(hit, primitive.key()) {
+                                triangle = None;
+                            }
                             search = closest.search();
                         }
                     }
@@ -214,7 +224,12 @@ impl Bvh<'_> {
             }
         });
         count_n(Counter::IntersectionTests, triangle_tests);
-        closest.hit(self.objects, ray)
+        match triangle {
+            Some((i, found)) => {
+                triangle_record(self.objects, self.primitives[i], &self.triangles[i], ray, found)
+            }
+            None => closest.hit(self.objects, ray),
+        }
         // SOLUTION END
     }
 
