@@ -8,21 +8,134 @@
 //! not (`grader bench-rays`, benches/README.md). Book: §9.7 Ordered
 //! traversal, §9.10 Measuring a hierarchy.
 
-use l03_polygons_triangles::{TriangleHit, dominant_axis, edge_function, interpolate_normal};
+use l03_polygons_triangles::{TriangleHit, dominant_axis, interpolate_normal};
 use raylab::math::gamma;
 use raylab::scene::{Object, Shape};
 use raylab::{Float, Hit, Interval, Ray, Vec2, Vec3, Vec4};
 
-use crate::bvh::{Node, WIDTH};
+use crate::bvh::{MAX_LEAF, Node, WIDTH};
 use crate::primitive::Primitive;
-use crate::traverse::Waiting;
+use crate::traverse::STACK_SIZE;
+use std::cell::RefCell;
 
 thread_local! {
     /// The reference traversal's stack, one per thread, reused by every ray:
-    /// no allocation once it has grown, and nothing to clear but its length
-    /// (a fresh array of [`crate::STACK_SIZE`] entries per ray cost a third
-    /// of the traversal's time, measured).
-    pub static STACK: std::cell::RefCell<Vec<Waiting>> = const { std::cell::RefCell::new(Vec::new()) };
+    /// nothing to allocate or clear per ray, only a count of the entries in
+    /// use (a fresh array of [`STACK_SIZE`] entries per ray cost a third of
+    /// the traversal's time, measured; a `Vec` reused the same way, its
+    /// capacity checks and length kept in memory, about 5 %).
+    pub static STACK: RefCell<[Next; STACK_SIZE]> = const { RefCell::new([Next::ROOT; STACK_SIZE]) };
+}
+
+/// What the reference traversal visits next, or keeps waiting on its stack:
+/// a node, or a leaf's [`LeafLanes`] ([`Leaves::children`] says which), with
+/// the t at which the ray enters its box.
+#[derive(Clone, Copy, Debug)]
+pub struct Next {
+    pub child: u32,
+    pub t_enter: Float,
+}
+
+impl Next {
+    /// The root node, entered before anything.
+    pub const ROOT: Next = Next { child: 0, t_enter: Float::NEG_INFINITY };
+
+    /// Marks `child` as the index of a leaf's [`LeafLanes`], not of a node.
+    pub const LEAF: u32 = 1 << 31;
+}
+
+/// The leaves of a [`crate::Bvh`] as the reference traversal tests them:
+/// each leaf's primitives (at most [`MAX_LEAF`] = four) in the four lanes of
+/// one [`LeafLanes`], and for every node its children as [`Next::child`]
+/// says them (a node's index, or [`Next::LEAF`] and the leaf's lanes), so
+/// that a child met is visited with no other lookup. Book: §9.7 Ordered
+/// traversal.
+#[derive(Clone, Debug, Default)]
+pub struct Leaves {
+    /// Every leaf's lanes, in the order of the leaves' primitives.
+    pub lanes: Vec<LeafLanes>,
+    /// `children[i][c]`: child c of node i (anything for an empty slot).
+    pub children: Vec<[u32; WIDTH]>,
+}
+
+/// One leaf's primitives in four lanes: lane k is the leaf's k-th primitive
+/// (`first + k`); the corners of the mesh triangles among them, plane by
+/// plane, and which lanes hold what.
+#[derive(Clone, Copy, Debug)]
+pub struct LeafLanes {
+    /// `corners[3 j + a]`: coordinate a of corner j (a, b, c) of each lane's
+    /// triangle; NaN in the lanes without one (so no edge function there is 0
+    /// and sends the lane to the f64 recomputation; a NaN lane never hits).
+    corners: [Vec4; 9],
+    /// The lanes 03's triangle test can hit (bit k for lane k): mesh triangles
+    /// with a plane and a normal that does not overflow.
+    triangles: u32,
+    /// The lanes that are whole objects, tested by [`Primitive::hit`].
+    pub whole: u32,
+    /// The leaf's first primitive (in [`crate::Bvh::primitives`]).
+    pub first: u32,
+}
+
+const _: () = assert!(MAX_LEAF == 4 && WIDTH == 4, "a leaf's primitives fill the four lanes of a Vec4");
+
+impl LeafLanes {
+    /// The lanes of a leaf of `primitives` (at most four) from `first`, with
+    /// corners `triangles` (anything for a whole object).
+    pub fn new(first: u32, primitives: &[Primitive], triangles: &[[Vec3; 3]]) -> LeafLanes {
+        debug_assert!(primitives.len() <= MAX_LEAF && triangles.len() == primitives.len());
+        let mut lanes = LeafLanes { corners: [Vec4::NAN; 9], triangles: 0, whole: 0, first };
+        for (k, (primitive, &[a, b, c])) in primitives.iter().zip(triangles).enumerate() {
+            if primitive.triangle == Primitive::WHOLE {
+                lanes.whole |= 1 << k;
+                continue;
+            }
+            for (j, corner) in [a, b, c].into_iter().enumerate() {
+                for axis in 0..3 {
+                    lanes.corners[3 * j + axis][k] = corner[axis];
+                }
+            }
+            // 03's hit_triangle: no hit for a triangle without a plane, or whose
+            // normal overflows.
+            let (ab, ac) = (b - a, c - a);
+            if ac.cross(ab).length_squared() != 0.0 && ab.cross(ac).try_normalize().is_some() {
+                lanes.triangles |= 1 << k;
+            }
+        }
+        lanes
+    }
+
+    /// How many of the lanes are mesh triangles, all tested at once (for the
+    /// ray statistics, which count triangle tests).
+    pub fn triangles_tested(&self) -> u32 {
+        self.triangles.count_ones()
+    }
+}
+
+impl Leaves {
+    /// The lanes of every leaf of the tree `nodes`, whose leaves hold
+    /// `primitives` with corners `triangles` (as [`crate::Bvh`] keeps them).
+    pub fn new(nodes: &[Node], primitives: &[Primitive], triangles: &[[Vec3; 3]]) -> Leaves {
+        let mut leaves = Leaves::default();
+        for node in nodes {
+            let mut children = [0; WIDTH];
+            for (c, child) in children.iter_mut().enumerate() {
+                if node.is_empty_slot(c) {
+                    continue;
+                }
+                if !node.is_leaf(c) {
+                    *child = node.offset[c];
+                    continue;
+                }
+                let (first, count) = (node.offset[c] as usize, node.count[c] as usize);
+                let range = first..first + count;
+                let lanes = LeafLanes::new(first as u32, &primitives[range.clone()], &triangles[range]);
+                *child = Next::LEAF | leaves.lanes.len() as u32;
+                leaves.lanes.push(lanes);
+            }
+            leaves.children.push(children);
+        }
+        leaves
+    }
 }
 
 impl Node {
@@ -108,27 +221,31 @@ impl BoxRay {
     /// ranges starting at `range_min`.
     pub fn new(ray: &Ray, range_min: Float) -> Self {
         let widen_each = !(range_min >= 0.0 && range_min.is_finite());
-        let (down, up) = if widen_each { (1.0, 1.0) } else { (WIDEN_DOWN, WIDEN_UP) };
+        let (down, up) = match widen_each {
+            true => (Vec4::ONE, Vec4::ONE),
+            false => (Vec4::splat(WIDEN_DOWN), Vec4::splat(WIDEN_UP)),
+        };
+        // 1/d of the three axes in one division of four lanes (each lane rounded as
+        // the scalar 1/d is).
+        let inv = Vec4::ONE / ray.dir.extend(1.0);
+        let forward = inv.cmpgt(Vec4::ZERO);
+        let (inv_min, inv_max) =
+            (inv * Vec4::select(forward, down, up), inv * Vec4::select(forward, up, down));
+        let lanes = |v: Vec4| [v.x, v.y, v.z].map(Vec4::splat);
+        let origin = lanes(ray.origin.extend(0.0));
         let mut prepared = BoxRay {
-            origin_min: [Vec4::ZERO; 3],
-            origin_max: [Vec4::ZERO; 3],
-            inv_min: [Vec4::ZERO; 3],
-            inv_max: [Vec4::ZERO; 3],
+            origin_min: origin,
+            origin_max: origin,
+            inv_min: lanes(inv_min),
+            inv_max: lanes(inv_max),
             widen_each,
         };
-        for a in 0..3 {
-            let (o, inv) = (ray.origin[a], 1.0 / ray.dir[a]);
-            let (origin_min, origin_max, inv_min, inv_max) = if !inv.is_finite() {
-                (o.next_up(), o.next_down(), Float::INFINITY, Float::INFINITY)
-            } else if inv > 0.0 {
-                (o, o, inv * down, inv * up)
-            } else {
-                (o, o, inv * up, inv * down)
-            };
-            prepared.origin_min[a] = Vec4::splat(origin_min);
-            prepared.origin_max[a] = Vec4::splat(origin_max);
-            prepared.inv_min[a] = Vec4::splat(inv_min);
-            prepared.inv_max[a] = Vec4::splat(inv_max);
+        // Axes along which the ray does not move (rare).
+        for a in (0..3).filter(|&a| !inv[a].is_finite()) {
+            prepared.origin_min[a] = Vec4::splat(ray.origin[a].next_up());
+            prepared.origin_max[a] = Vec4::splat(ray.origin[a].next_down());
+            prepared.inv_min[a] = Vec4::INFINITY;
+            prepared.inv_max[a] = Vec4::INFINITY;
         }
         prepared
     }
@@ -136,64 +253,82 @@ impl BoxRay {
 
 /// Lecture 03's watertight test (`hit_triangle_watertight`, Woop, Benthin and
 /// Wald 2013) split in two: the part that depends on the ray alone (the
-/// dominant axis kz and the shear Sₓ = −dₓ/d_z, S_y = −d_y/d_z, 1/d_z, two
-/// divisions and a reciprocal) made once per ray here, the rest per triangle
-/// in [`ShearedRay::hit`]. The same operations on the same numbers in the
-/// same order as 03's: the same t, bit for bit, so the BVH's answers stay
-/// brute force's. Book: §9.7 Ordered traversal.
+/// shear Sₓ = −dₓ/d_z, S_y = −d_y/d_z and 1/d_z, three divisions done as one
+/// of four lanes) made once per ray here, the rest per triangle in
+/// [`ShearedRay::hit`]. The ray's dominant axis `KZ` (03's `dominant_axis`,
+/// which becomes z; (KZ + 1) mod 3 becomes x and (KZ + 2) mod 3 y) is a
+/// constant of the type, so that the traversal, made once per axis, picks
+/// the coordinates with no test per triangle. The same operations on the same
+/// numbers in the same order as 03's: the same t, β and γ, bit for bit, so
+/// the BVH's answers stay brute force's. Book: §9.7 Ordered traversal.
 #[derive(Clone, Copy, Debug)]
-pub struct ShearedRay {
+pub struct ShearedRay<const KZ: usize> {
     origin: Vec3,
-    /// kx, ky, kz: the axes that become x, y and z (kz the direction's dominant one).
-    axes: [usize; 3],
     /// Sₓ, S_y and 1/d_z.
     shear: Vec3,
 }
 
-impl ShearedRay {
-    /// The per-ray part of the triangle tests of `ray` (`dir` not zero).
+impl<const KZ: usize> ShearedRay<KZ> {
+    /// The axes that become x and y.
+    const KX: usize = (KZ + 1) % 3;
+    const KY: usize = (KZ + 2) % 3;
+
+    /// The per-ray part of the triangle tests of `ray`, whose dominant axis
+    /// must be `KZ`.
     pub fn new(ray: &Ray) -> Self {
-        let kz = dominant_axis(ray.dir);
-        let (kx, ky) = ((kz + 1) % 3, (kz + 2) % 3);
-        let d = Vec3::new(ray.dir[kx], ray.dir[ky], ray.dir[kz]);
-        Self { origin: ray.origin, axes: [kx, ky, kz], shear: Vec3::new(-d.x / d.z, -d.y / d.z, 1.0 / d.z) }
+        debug_assert_eq!(dominant_axis(ray.dir), KZ, "{ray:?}");
+        let d = ray.dir;
+        // −dₓ/d_z, −d_y/d_z and 1/d_z: (−a)/b is −(a/b) exactly, so these are 03's.
+        let shear = Vec4::new(-d[Self::KX], -d[Self::KY], 1.0, 1.0) / Vec4::splat(d[KZ]);
+        Self { origin: ray.origin, shear: shear.truncate() }
     }
 
-    /// Where the ray meets the triangle (a, b, c) inside `range` (t, β, γ),
-    /// as lecture 03's `hit_triangle` finds it (the watertight test, and no
-    /// hit for a triangle without a plane or whose normal overflows), or
-    /// `None`.
-    #[inline(always)] // once per triangle in the traversal's hot loop
-    pub fn hit(&self, [a, b, c]: &[Vec3; 3], range: Interval) -> Option<TriangleHit> {
-        let [kx, ky, kz] = self.axes;
-        let to_ray_space = |v: Vec3| {
-            let p = v - self.origin;
-            let (x, y, z) = (p[kx], p[ky], p[kz]);
-            Vec3::new(x + self.shear.x * z, y + self.shear.y * z, z * self.shear.z)
+    /// The triangles of a leaf's lanes tested at once, each lane exactly as
+    /// 03's `hit_triangle` tests one: the same operations, lane by lane
+    /// (an edge function that is 0 in f32 recomputed in f64 for that lane, as
+    /// 03's `edge_function` does). Returns the mask of the lanes hit inside
+    /// `range` (bit k for lane k) and each lane's t, β and γ (meaningful in
+    /// the lanes hit).
+    #[inline(always)] // once per leaf in the traversal's hot loop
+    pub fn hit_lanes(&self, lanes: &LeafLanes, range: Interval) -> (u32, [TriangleHit; 4]) {
+        let origin = self.origin.extend(0.0);
+        let (kx, ky) = (Self::KX, Self::KY);
+        let (sx, sy, sz) = (Vec4::splat(self.shear.x), Vec4::splat(self.shear.y), Vec4::splat(self.shear.z));
+        let to_ray_space = |j: usize| {
+            let c = &lanes.corners[3 * j..3 * j + 3];
+            let (x, y, z) = (
+                c[kx] - Vec4::splat(origin[kx]),
+                c[ky] - Vec4::splat(origin[ky]),
+                c[KZ] - Vec4::splat(origin[KZ]),
+            );
+            [x + sx * z, y + sy * z, z * sz]
         };
-        let (p0, p1, p2) = (to_ray_space(*a), to_ray_space(*b), to_ray_space(*c));
-        let e0 = edge_function(p1, p2);
-        let e1 = edge_function(p2, p0);
-        let e2 = edge_function(p0, p1);
-        if (e0 < 0.0 || e1 < 0.0 || e2 < 0.0) && (e0 > 0.0 || e1 > 0.0 || e2 > 0.0) {
-            return None;
-        }
+        let (p0, p1, p2) = (to_ray_space(0), to_ray_space(1), to_ray_space(2));
+        let edge = |p: &[Vec4; 3], q: &[Vec4; 3]| {
+            let e = p[0] * q[1] - p[1] * q[0];
+            // 03's edge_function: a 0 in f32 is recomputed in f64 (rare: edge-on rays).
+            if Float::MANTISSA_DIGITS < f64::MANTISSA_DIGITS && e.cmpeq(Vec4::ZERO).any() {
+                #[allow(clippy::unnecessary_cast)] // the identity when Float is f64
+                let wide = |v: Vec4, k: usize| v[k] as f64;
+                return Vec4::from_array(std::array::from_fn(|k| match e[k] == 0.0 {
+                    true => (wide(p[0], k) * wide(q[1], k) - wide(p[1], k) * wide(q[0], k)) as Float,
+                    false => e[k],
+                }));
+            }
+            e
+        };
+        let (e0, e1, e2) = (edge(&p1, &p2), edge(&p2, &p0), edge(&p0, &p1));
+        let negative = e0.cmplt(Vec4::ZERO) | e1.cmplt(Vec4::ZERO) | e2.cmplt(Vec4::ZERO);
+        let positive = e0.cmpgt(Vec4::ZERO) | e1.cmpgt(Vec4::ZERO) | e2.cmpgt(Vec4::ZERO);
         let det = e0 + e1 + e2;
-        if det == 0.0 {
-            return None;
-        }
-        let inv_det = 1.0 / det;
-        let t = (e0 * p0.z + e1 * p1.z + e2 * p2.z) * inv_det;
-        if !range.contains(t) {
-            return None;
-        }
-        // Rare, so last: 03 gives no hit for a triangle without a plane, or whose
-        // normal overflows (checked there first; the order does not change the answer).
-        let (ab, ac) = (*b - *a, *c - *a);
-        if ac.cross(ab).length_squared() == 0.0 || ab.cross(ac).try_normalize().is_none() {
-            return None;
-        }
-        Some(TriangleHit { t, beta: e1 * inv_det, gamma: e2 * inv_det })
+        let inv_det = Vec4::ONE / det;
+        let t = (e0 * p0[2] + e1 * p1[2] + e2 * p2[2]) * inv_det;
+        // Inside (all edge functions of one sign, zeros allowed), not edge-on, in range.
+        let inside = !(negative & positive) & det.cmpne(Vec4::ZERO);
+        let in_range = Vec4::splat(range.min).cmplt(t) & t.cmplt(Vec4::splat(range.max));
+        let hit = (inside & in_range).bitmask() & lanes.triangles;
+        let (t, beta, gamma) = (t.to_array(), (e1 * inv_det).to_array(), (e2 * inv_det).to_array());
+        (hit, std::array::from_fn(|k| TriangleHit { t: t[k], beta: beta[k], gamma: gamma[k] }))
     }
 }
 
@@ -359,25 +494,53 @@ mod tests {
         }
     }
 
+    /// [`ShearedRay::hit_lanes`] of the copy for `ray`'s dominant axis, as the traversal picks it.
+    fn hit_lanes(ray: &Ray, lanes: &LeafLanes, range: Interval) -> (u32, [TriangleHit; 4]) {
+        match dominant_axis(ray.dir) {
+            0 => ShearedRay::<0>::new(ray).hit_lanes(lanes, range),
+            1 => ShearedRay::<1>::new(ray).hit_lanes(lanes, range),
+            _ => ShearedRay::<2>::new(ray).hit_lanes(lanes, range),
+        }
+    }
+
     #[test]
-    fn sheared_ray_finds_03s_t_beta_and_gamma_bit_for_bit() {
-        // Random triangles (a tenth degenerate: two corners equal, or all three on a
-        // line) and rays aimed at a random point of each (so about half hit), plus rays
-        // aimed exactly at the corners and edge midpoints: ShearedRay::hit gives the t and
-        // (β, γ) = uv of 03's hit_triangle (what brute force uses), bit for bit, or None with it.
+    fn leaf_lanes_find_03s_t_beta_and_gamma_bit_for_bit() {
+        // Leaves of one to four random triangles (a tenth degenerate: two corners equal,
+        // or all three on a line; every third leaf's second triangle shares the first's
+        // edge ab; every seventh leaf with a whole object in a lane) and rays aimed at a
+        // random point of one of them (so about half hit), plus rays aimed exactly at
+        // corners and at the midpoint of the shared edge, where edge functions are 0 and
+        // are recomputed in f64, lane by lane. Every lane must be 03's hit_triangle (what
+        // brute force uses): hit or not alike, and t and (β, γ) = uv bit for bit.
         let mut rng = Rng::new(23);
-        let mut hits = 0;
+        let (mut hits, mut edge_hits) = (0, 0);
         for n in 0..20_000 {
-            let (a, mut b, mut c) = (rng.in_cube(2.0), rng.in_cube(2.0), rng.in_cube(2.0));
-            match n % 20 {
-                0 => b = a,
-                1 => c = a.lerp(b, 0.25),
-                _ => {}
+            let count = 1 + n % 4;
+            let mut triangles: Vec<[Vec3; 3]> = Vec::new();
+            for k in 0..count {
+                let (a, mut b, mut c) = (rng.in_cube(2.0), rng.in_cube(2.0), rng.in_cube(2.0));
+                match (n + k) % 20 {
+                    0 => b = a,
+                    1 => c = a.lerp(b, 0.25),
+                    _ => {}
+                }
+                if k == 1 && n % 3 == 0 {
+                    let [a0, b0, _] = triangles[0];
+                    (b, c) = (a0, b0);
+                }
+                triangles.push([a, b, c]);
             }
+            let mut primitives: Vec<Primitive> =
+                (0..count).map(|k| Primitive { object: 0, triangle: k as u32 }).collect();
+            if n % 7 == 0 {
+                primitives[n % count] = Primitive::whole(1);
+            }
+            let lanes = LeafLanes::new(0, &primitives, &triangles);
+            let [a, b, c] = triangles[n % count];
             let (beta, gamma) = rng.barycentric();
             let mut targets = vec![a + (b - a) * beta as Float * 1.2 + (c - a) * gamma as Float * 1.2];
-            if n % 50 == 0 {
-                targets.extend([a, b, c, a.lerp(b, 0.5), b.lerp(c, 0.5)]);
+            if n % 10 == 0 {
+                targets.extend([a, b, c, triangles[0][0].lerp(triangles[0][1], 0.5)]);
             }
             for target in targets {
                 let origin = rng.in_cube(5.0);
@@ -386,15 +549,65 @@ mod tests {
                 }
                 let ray = Ray::new(origin, target - origin);
                 let range =
-                    if n % 3 == 0 { Interval::new(0.0, rng.range(0.5, 2.0)) } else { Interval::POSITIVE };
-                let expected = hit_triangle(&ray, &[a, b, c], None, range).map(|h| [h.t, h.uv.x, h.uv.y]);
-                let found = ShearedRay::new(&ray).hit(&[a, b, c], range).map(|f| [f.t, f.beta, f.gamma]);
-                let bits = |v: Option<[Float; 3]>| v.map(|v| v.map(Float::to_bits));
-                assert_eq!(bits(found), bits(expected), "{ray:?} {a} {b} {c}");
-                hits += found.is_some() as usize;
+                    if n % 3 == 1 { Interval::new(0.0, rng.range(0.5, 2.0)) } else { Interval::POSITIVE };
+                let (mask, found) = hit_lanes(&ray, &lanes, range);
+                assert_eq!(mask >> count, 0, "a lane beyond the leaf hit");
+                for (k, triangle) in triangles.iter().enumerate() {
+                    let expected = match primitives[k].triangle {
+                        Primitive::WHOLE => None,
+                        _ => hit_triangle(&ray, triangle, None, range).map(|h| [h.t, h.uv.x, h.uv.y]),
+                    };
+                    let lane = (mask & 1 << k != 0).then_some([found[k].t, found[k].beta, found[k].gamma]);
+                    let bits = |v: Option<[Float; 3]>| v.map(|v| v.map(Float::to_bits));
+                    assert_eq!(bits(lane), bits(expected), "lane {k} of {count}: {ray:?} {triangle:?}");
+                    hits += lane.is_some() as usize;
+                    edge_hits += lane.is_some_and(|[_, beta, gamma]| beta == 0.0 || gamma == 0.0) as usize;
+                }
             }
         }
-        eprintln!("sheared triangle test: {hits} hits, all 03's t, β and γ bit for bit");
-        assert!(hits > 5_000, "only {hits} hits");
+        eprintln!("leaf lanes: {hits} hits ({edge_hits} on an edge), all 03's t, β and γ bit for bit");
+        assert!(hits > 10_000 && edge_hits > 100, "only {hits} hits, {edge_hits} on an edge");
+    }
+
+    #[test]
+    fn leaves_list_every_child_of_the_tree() {
+        // A mixed scene (whole objects and a 1,024-triangle torus): every node's children
+        // as the reference visits them are its nodes, or its leaves' lanes, whose
+        // primitives are the leaf's, each lane a triangle (with its corners) or a whole
+        // object as the leaf holds it.
+        let objects = crate::test_support::mixed_scene(&mut Rng::new(5));
+        let bvh = crate::Bvh::build(&objects);
+        assert_eq!(bvh.leaves.children.len(), bvh.nodes.len());
+        let mut leaves = 0;
+        for (node, children) in bvh.nodes.iter().zip(&bvh.leaves.children) {
+            for c in (0..WIDTH).filter(|&c| !node.is_empty_slot(c)) {
+                if !node.is_leaf(c) {
+                    assert_eq!(children[c], node.offset[c]);
+                    continue;
+                }
+                assert_eq!(children[c], Next::LEAF | leaves, "leaves in order");
+                let lanes = &bvh.leaves.lanes[leaves as usize];
+                assert_eq!(lanes.first, node.offset[c]);
+                for k in 0..WIDTH {
+                    let i = lanes.first as usize + k;
+                    let whole = k < node.count[c] as usize && bvh.primitives[i].triangle == Primitive::WHOLE;
+                    assert_eq!(lanes.whole & 1 << k != 0, whole);
+                    if lanes.triangles & 1 << k != 0 {
+                        assert!(k < node.count[c] as usize && !whole);
+                        let corners = (0..9).map(|j| lanes.corners[j][k]).collect::<Vec<_>>();
+                        assert_eq!(
+                            corners,
+                            bvh.triangles[i].iter().flat_map(|v| v.to_array()).collect::<Vec<_>>()
+                        );
+                    }
+                }
+                leaves += 1;
+            }
+        }
+        assert_eq!(leaves as usize, bvh.leaves.lanes.len());
+        assert!(
+            bvh.leaves.lanes.iter().any(|l| l.whole != 0)
+                && bvh.leaves.lanes.iter().any(|l| l.triangles != 0)
+        );
     }
 }

@@ -130,9 +130,112 @@ impl Bvh<'_> {
     pub fn closest_hit(&self, ray: &Ray, range: Interval) -> Option<Hit> {
         debug_assert!(ray.dir != Vec3::ZERO, "the ray direction must not be zero");
         // SOLUTION BEGIN
-        use crate::fast::{BoxRay, STACK, ShearedRay, triangle_record};
-        let mut closest = Closest::new(range);
+        use crate::fast::{BoxRay, Next, STACK, ShearedRay, triangle_record};
+        use l03_polygons_triangles::{TriangleHit, dominant_axis};
 
+        /// The tree's part of the search, for rays whose dominant axis is `KZ`
+        /// (a constant, so the triangle test picks its coordinates with no test):
+        /// the closest hit's triangle while it is one (its place in the leaves'
+        /// order and the watertight test's result, from which its hit record is
+        /// built), and the number of triangle tests made.
+        fn tree<const KZ: usize>(
+            bvh: &Bvh,
+            ray: &Ray,
+            closest: &mut Closest,
+        ) -> (Option<(usize, TriangleHit)>, u64) {
+            let (boxes, sheared) = (BoxRay::new(ray, closest.range.min), ShearedRay::<KZ>::new(ray));
+            let mut search = closest.search();
+            let (mut triangle, mut triangle_tests) = (None, 0);
+            STACK.with_borrow_mut(|stack| {
+                // The children waiting are stack[..waiting], the nearest on top.
+                let mut waiting = 0;
+                let mut current = Next::ROOT;
+                loop {
+                    if current.child & Next::LEAF != 0 {
+                        // A leaf: its triangles at once, then its whole objects.
+                        let lanes = &bvh.leaves.lanes[(current.child & !Next::LEAF) as usize];
+                        let (mut hit, found) = sheared.hit_lanes(lanes, search);
+                        triangle_tests += (lanes.triangles_tested()) as u64;
+                        while hit != 0 {
+                            let k = hit.trailing_zeros() as usize;
+                            hit &= hit - 1;
+                            let i = lanes.first as usize + k;
+                            if closest.offer_triangle(found[k].t, bvh.primitives[i]) {
+                                triangle = Some((i, found[k]));
+                            }
+                            search = closest.search();
+                        }
+                        let mut whole = lanes.whole;
+                        while whole != 0 {
+                            let primitive =
+                                bvh.primitives[lanes.first as usize + whole.trailing_zeros() as usize];
+                            whole &= whole - 1;
+                            if let Some(hit) = primitive.hit(bvh.objects, ray, search) {
+                                if closest.offer(hit, primitive.key()) {
+                                    triangle = None;
+                                }
+                                search = closest.search();
+                            }
+                        }
+                    } else {
+                        // A node: into the nearest child the ray meets; the others wait
+                        // on the stack, the nearer ones on top.
+                        let index = current.child as usize;
+                        let (t_enter, mut met) = bvh.nodes[index].hit_children(&boxes, search);
+                        let children = &bvh.leaves.children[index];
+                        // The met child of lowest index, taken out of `met`.
+                        let next_met = |met: &mut u32| {
+                            let c = met.trailing_zeros() as usize % WIDTH;
+                            *met &= *met - 1;
+                            Next { child: children[c], t_enter: t_enter[c] }
+                        };
+                        match met.count_ones() {
+                            0 => {}
+                            1 => {
+                                current = next_met(&mut met);
+                                continue;
+                            }
+                            2 => {
+                                let (a, b) = (next_met(&mut met), next_met(&mut met));
+                                let (near, far) = if b.t_enter < a.t_enter { (b, a) } else { (a, b) };
+                                stack[waiting] = far;
+                                waiting += 1;
+                                current = near;
+                                continue;
+                            }
+                            _ => {
+                                // Three or four: an insertion sort, the farthest at the bottom.
+                                let bottom = waiting;
+                                while met != 0 {
+                                    let child = next_met(&mut met);
+                                    let mut slot = waiting;
+                                    while slot > bottom && stack[slot - 1].t_enter < child.t_enter {
+                                        stack[slot] = stack[slot - 1];
+                                        slot -= 1;
+                                    }
+                                    stack[slot] = child;
+                                    waiting += 1;
+                                }
+                            }
+                        }
+                    }
+                    // The nearest child waiting that starts before the closest hit so far.
+                    loop {
+                        if waiting == 0 {
+                            return;
+                        }
+                        waiting -= 1;
+                        if stack[waiting].t_enter < search.max {
+                            current = stack[waiting];
+                            break;
+                        }
+                    }
+                }
+            });
+            (triangle, triangle_tests)
+        }
+
+        let mut closest = Closest::new(range);
         // The unbounded objects, every one.
         for &primitive in &self.unbounded {
             if let Some(hit) = primitive.hit(self.objects, ray, closest.search()) {
@@ -142,87 +245,12 @@ impl Bvh<'_> {
         if self.nodes.is_empty() {
             return closest.hit(self.objects, ray);
         }
-
-        // The tree, from the root.
-        let (boxes, sheared) = (BoxRay::new(ray, range.min), ShearedRay::new(ray));
-        let mut search = closest.search();
-        let mut triangle_tests = 0;
-        // The closest hit's triangle while it is one: its place in the leaves' order
-        // and the watertight test's result, from which its hit record is built.
-        let mut triangle = None;
-        STACK.with_borrow_mut(|stack| {
-            stack.clear();
-            let mut current = Waiting { offset: 0, count: 0, t_enter: Float::NEG_INFINITY };
-            loop {
-                if current.count > 0 {
-                    // A leaf: test its primitives, shrinking the range as hits come.
-                    for i in current.offset as usize..(current.offset + current.count) as usize {
-                        let primitive = self.primitives[i];
-                        if primitive.triangle != Primitive::WHOLE {
-                            // A mesh triangle: its t only, the hit record at the end.
-                            triangle_tests += 1;
-                            if let Some(found) = sheared.hit(&self.triangles[i], search) {
-                                if closest.offer_triangle(found.t, primitive) {
-                                    triangle = Some((i, found));
-                                }
-                                search = closest.search();
-                            }
-                        } else if let Some(hit) = primitive.hit(self.objects, ray, search) {
-                            if closest.offer(hit, primitive.key()) {
-                                triangle = None;
-                            }
-                            search = closest.search();
-                        }
-                    }
-                } else {
-                    // A node: into the nearest child the ray meets; the others wait on
-                    // the stack, the nearer ones on top.
-                    let node = &self.nodes[current.offset as usize];
-                    let (t_enter, mut met) = node.hit_children(&boxes, search);
-                    // The met child of lowest index, taken out of `met`.
-                    let next_met = |met: &mut u32| {
-                        let i = met.trailing_zeros() as usize % WIDTH;
-                        *met &= *met - 1;
-                        Waiting { offset: node.offset[i], count: node.count[i], t_enter: t_enter[i] }
-                    };
-                    match met.count_ones() {
-                        0 => {}
-                        1 => {
-                            current = next_met(&mut met);
-                            continue;
-                        }
-                        2 => {
-                            let (a, b) = (next_met(&mut met), next_met(&mut met));
-                            let (near, far) = if b.t_enter < a.t_enter { (b, a) } else { (a, b) };
-                            stack.push(far);
-                            current = near;
-                            continue;
-                        }
-                        _ => {
-                            // Three or four: an insertion sort, the farthest at the bottom.
-                            let bottom = stack.len();
-                            while met != 0 {
-                                let child = next_met(&mut met);
-                                stack.push(child);
-                                let mut slot = stack.len() - 1;
-                                while slot > bottom && stack[slot - 1].t_enter < child.t_enter {
-                                    stack.swap(slot, slot - 1);
-                                    slot -= 1;
-                                }
-                            }
-                        }
-                    }
-                }
-                // The nearest child waiting that starts before the closest hit so far.
-                loop {
-                    let Some(next) = stack.pop() else { return };
-                    if next.t_enter < search.max {
-                        current = next;
-                        break;
-                    }
-                }
-            }
-        });
+        // The tree, from the root, traversed by the copy made for the ray's dominant axis.
+        let (triangle, triangle_tests) = match dominant_axis(ray.dir) {
+            0 => tree::<0>(self, ray, &mut closest),
+            1 => tree::<1>(self, ray, &mut closest),
+            _ => tree::<2>(self, ray, &mut closest),
+        };
         count_n(Counter::IntersectionTests, triangle_tests);
         match triangle {
             Some((i, found)) => {
@@ -244,7 +272,61 @@ impl Bvh<'_> {
     pub fn any_hit(&self, ray: &Ray, range: Interval) -> bool {
         debug_assert!(ray.dir != Vec3::ZERO, "the ray direction must not be zero");
         // SOLUTION BEGIN
-        use crate::fast::{BoxRay, STACK, ShearedRay};
+        use crate::fast::{BoxRay, Next, STACK, ShearedRay};
+        use l03_polygons_triangles::dominant_axis;
+
+        /// The tree's part, for rays whose dominant axis is `KZ`, until the first
+        /// blocker; and the number of triangle tests made.
+        fn tree<const KZ: usize>(bvh: &Bvh, ray: &Ray, range: Interval) -> (bool, u64) {
+            let (boxes, sheared) = (BoxRay::new(ray, range.min), ShearedRay::<KZ>::new(ray));
+            let mut triangle_tests = 0;
+            let blocked = STACK.with_borrow_mut(|stack| {
+                let mut waiting = 0;
+                let mut current = Next::ROOT;
+                loop {
+                    if current.child & Next::LEAF != 0 {
+                        let lanes = &bvh.leaves.lanes[(current.child & !Next::LEAF) as usize];
+                        triangle_tests += lanes.triangles_tested() as u64;
+                        if sheared.hit_lanes(lanes, range).0 != 0 {
+                            return true;
+                        }
+                        let mut whole = lanes.whole;
+                        while whole != 0 {
+                            let primitive =
+                                bvh.primitives[lanes.first as usize + whole.trailing_zeros() as usize];
+                            whole &= whole - 1;
+                            if primitive.hit(bvh.objects, ray, range).is_some() {
+                                return true;
+                            }
+                        }
+                    } else {
+                        // Into the first child met, the others onto the stack.
+                        let index = current.child as usize;
+                        let (t_enter, mut met) = bvh.nodes[index].hit_children(&boxes, range);
+                        let children = &bvh.leaves.children[index];
+                        if met != 0 {
+                            let first = met.trailing_zeros() as usize % WIDTH;
+                            met &= met - 1;
+                            while met != 0 {
+                                let c = met.trailing_zeros() as usize % WIDTH;
+                                met &= met - 1;
+                                stack[waiting] = Next { child: children[c], t_enter: t_enter[c] };
+                                waiting += 1;
+                            }
+                            current = Next { child: children[first], t_enter: t_enter[first] };
+                            continue;
+                        }
+                    }
+                    if waiting == 0 {
+                        return false;
+                    }
+                    waiting -= 1;
+                    current = stack[waiting];
+                }
+            });
+            (blocked, triangle_tests)
+        }
+
         // The unbounded objects.
         if self.unbounded.iter().any(|primitive| primitive.hit(self.objects, ray, range).is_some()) {
             return true;
@@ -252,54 +334,12 @@ impl Bvh<'_> {
         if self.nodes.is_empty() {
             return false;
         }
-
         // The tree, until the first blocker.
-        let (boxes, sheared) = (BoxRay::new(ray, range.min), ShearedRay::new(ray));
-        let mut triangle_tests = 0;
-        let blocked = STACK.with_borrow_mut(|stack| {
-            stack.clear();
-            let mut current = Waiting { offset: 0, count: 0, t_enter: Float::NEG_INFINITY };
-            loop {
-                if current.count > 0 {
-                    for i in current.offset as usize..(current.offset + current.count) as usize {
-                        let primitive = self.primitives[i];
-                        let blocks = if primitive.triangle != Primitive::WHOLE {
-                            triangle_tests += 1;
-                            sheared.hit(&self.triangles[i], range).is_some()
-                        } else {
-                            primitive.hit(self.objects, ray, range).is_some()
-                        };
-                        if blocks {
-                            return true;
-                        }
-                    }
-                } else {
-                    // Into the first child met, the others onto the stack.
-                    let node = &self.nodes[current.offset as usize];
-                    let (t_enter, mut met) = node.hit_children(&boxes, range);
-                    if met != 0 {
-                        let first = met.trailing_zeros() as usize % WIDTH;
-                        met &= met - 1;
-                        while met != 0 {
-                            let i = met.trailing_zeros() as usize % WIDTH;
-                            met &= met - 1;
-                            stack.push(Waiting {
-                                offset: node.offset[i],
-                                count: node.count[i],
-                                t_enter: t_enter[i],
-                            });
-                        }
-                        current =
-                            Waiting { offset: node.offset[first], count: node.count[first], t_enter: 0.0 };
-                        continue;
-                    }
-                }
-                match stack.pop() {
-                    Some(next) => current = next,
-                    None => return false,
-                }
-            }
-        });
+        let (blocked, triangle_tests) = match dominant_axis(ray.dir) {
+            0 => tree::<0>(self, ray, range),
+            1 => tree::<1>(self, ray, range),
+            _ => tree::<2>(self, ray, range),
+        };
         count_n(Counter::IntersectionTests, triangle_tests);
         blocked
         // SOLUTION END
