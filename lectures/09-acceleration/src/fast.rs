@@ -219,6 +219,7 @@ pub struct BoxRay {
 impl BoxRay {
     /// The per-ray part of the box tests of `ray` (`dir` not zero) for
     /// ranges starting at `range_min`.
+    #[inline(always)] // once per ray, built in place
     pub fn new(ray: &Ray, range_min: Float) -> Self {
         let widen_each = !(range_min >= 0.0 && range_min.is_finite());
         let (down, up) = match widen_each {
@@ -241,11 +242,13 @@ impl BoxRay {
             widen_each,
         };
         // Axes along which the ray does not move (rare).
-        for a in (0..3).filter(|&a| !inv[a].is_finite()) {
-            prepared.origin_min[a] = Vec4::splat(ray.origin[a].next_up());
-            prepared.origin_max[a] = Vec4::splat(ray.origin[a].next_down());
-            prepared.inv_min[a] = Vec4::INFINITY;
-            prepared.inv_max[a] = Vec4::INFINITY;
+        if !inv.is_finite() {
+            for a in (0..3).filter(|&a| !inv[a].is_finite()) {
+                prepared.origin_min[a] = Vec4::splat(ray.origin[a].next_up());
+                prepared.origin_max[a] = Vec4::splat(ray.origin[a].next_down());
+                prepared.inv_min[a] = Vec4::INFINITY;
+                prepared.inv_max[a] = Vec4::INFINITY;
+            }
         }
         prepared
     }
