@@ -115,11 +115,12 @@ impl Bvh<'_> {
     ///   direction 1/d: no division; the origin; the widening for rounding)
     ///   computed once per ray; the four-wide tree has half the levels of a
     ///   binary one.
-    /// - **Triangles ready to test.** A leaf's triangle corners sit side by
-    ///   side in [`Bvh::triangles`]; the watertight test's shear of the ray is
-    ///   computed once per ray, and only t, β and γ are found: the full
-    ///   [`Hit`] (point, interpolated normal, uv) is built once, for the
-    ///   closest, when the traversal ends. Whole objects (spheres, boxes, transformed
+    /// - **A leaf's triangles at once.** The corners of a leaf's (up to
+    ///   four) triangles sit in the four lanes of SIMD vectors, and 03's
+    ///   watertight test runs on the four together, its shear of the ray
+    ///   computed once per ray; only t, β and γ are found: the full [`Hit`]
+    ///   (point, interpolated normal, uv) is built once, for the closest, when
+    ///   the traversal ends. Whole objects (spheres, boxes, transformed
     ///   meshes) are hit through [`Primitive::hit`] as in brute force.
     /// - **Compact nodes** (see [`crate::Node`], 128 bytes) in one flat array,
     ///   and a tree built by the SAH (see [`Bvh::build`]).
