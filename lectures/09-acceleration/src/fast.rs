@@ -2,7 +2,8 @@
 //! The reference traversal's two kernels, with everything that depends on
 //! the ray alone computed once per ray: the four boxes of a node tested at
 //! once ([`Node::hit_children`] with a [`BoxRay`]), and lecture 03's
-//! watertight triangle test with its shear precomputed ([`ShearedRay`]).
+//! watertight triangle test on a leaf's four triangles at once, with the
+//! ray's shear precomputed ([`ShearedRay::hit_lanes`] on [`LeafLanes`]).
 //! Students traverse with [`crate::Aabb::hit`] and
 //! [`crate::Primitive::triangle_t`]; the answers are the same, the speed is
 //! not (`grader bench-rays`, benches/README.md). Book: §9.7 Ordered
@@ -258,10 +259,11 @@ impl BoxRay {
 /// Wald 2013) split in two: the part that depends on the ray alone (the
 /// shear Sₓ = −dₓ/d_z, S_y = −d_y/d_z and 1/d_z, three divisions done as one
 /// of four lanes) made once per ray here, the rest per triangle in
-/// [`ShearedRay::hit`]. The ray's dominant axis `KZ` (03's `dominant_axis`,
-/// which becomes z; (KZ + 1) mod 3 becomes x and (KZ + 2) mod 3 y) is a
-/// constant of the type, so that the traversal, made once per axis, picks
-/// the coordinates with no test per triangle. The same operations on the same
+/// [`ShearedRay::hit_lanes`], four triangles at once. The ray's dominant
+/// axis `KZ` (03's `dominant_axis`, which becomes z; (KZ + 1) mod 3 becomes
+/// x and (KZ + 2) mod 3 y) is a constant of the type, so that the
+/// traversal, made once per axis, picks the coordinates with no test per
+/// triangle. The same operations on the same
 /// numbers in the same order as 03's: the same t, β and γ, bit for bit, so
 /// the BVH's answers stay brute force's. Book: §9.7 Ordered traversal.
 #[derive(Clone, Copy, Debug)]
@@ -309,7 +311,8 @@ impl<const KZ: usize> ShearedRay<KZ> {
         let (p0, p1, p2) = (to_ray_space(0), to_ray_space(1), to_ray_space(2));
         let edge = |p: &[Vec4; 3], q: &[Vec4; 3]| {
             let e = p[0] * q[1] - p[1] * q[0];
-            // 03's edge_function: a 0 in f32 is recomputed in f64 (rare: edge-on rays).
+            // 03's edge_function: a 0 in f32 is recomputed in f64 (rare: rays through
+            // an edge's line or a corner).
             if Float::MANTISSA_DIGITS < f64::MANTISSA_DIGITS && e.cmpeq(Vec4::ZERO).any() {
                 #[allow(clippy::unnecessary_cast)] // the identity when Float is f64
                 let wide = |v: Vec4, k: usize| v[k] as f64;
@@ -336,7 +339,7 @@ impl<const KZ: usize> ShearedRay<KZ> {
 }
 
 /// The hit record of the mesh triangle `primitive`, with corners `corners`,
-/// where `ray` meets it as `found` (from [`ShearedRay::hit`]) says: the very
+/// where `ray` meets it as `found` (from [`ShearedRay::hit_lanes`]) says: the very
 /// record lecture 03's `hit_triangle` and 09's `hit_mesh_triangle` build
 /// (the geometric normal, turned to face the ray; the interpolated vertex
 /// normal on that side, if the mesh has normals; uv from the mesh's, or
@@ -402,9 +405,9 @@ mod tests {
         b
     }
 
-    /// A random ray from [−6, 6]³ (two in three aimed into [−2, 2]³), one in five with a direction component of
-    /// ±0 (an axis-parallel ray), and a range: whole, shortened, late-starting
-    /// or starting below 0.
+    /// A random ray from [−6, 6]³ (two in three aimed into [−2, 2]³), one in
+    /// five with a direction component of ±0 (an axis-parallel ray), and a
+    /// range: whole, shortened, late-starting or starting below 0.
     fn random_query(rng: &mut Rng, n: usize) -> (Ray, Interval) {
         let origin = rng.in_cube(6.0);
         // Two in three aimed into the middle, where the boxes are.
