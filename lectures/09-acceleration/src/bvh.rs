@@ -306,8 +306,9 @@ fn choose_split(items: &mut [Item], depth: usize) -> Option<(usize, usize)> {
     }
     // Up to four mesh triangles: a leaf, whatever the SAH says. The reference
     // traversal tests a leaf's triangles at once, in four SIMD lanes, for about
-    // the price of one node: no split is cheaper (measured on the bunny: 17 %
-    // faster than leaves of one or two triangles the SAH would choose).
+    // the price of one node: no split is cheaper (measured on the bunny, in a
+    // prototype: 4 % faster than making leaves only of the subtrees of at most
+    // four triangles the SAH builds; 3.1 times fewer nodes than before).
     if n <= MAX_LEAF && items.iter().all(|item| item.primitive.triangle != Primitive::WHOLE) {
         return None;
     }
@@ -525,7 +526,8 @@ mod tests {
     fn up_to_four_triangles_are_one_leaf_whatever_the_sah_says() {
         // Four far-apart triangles of one mesh: the SAH would split them down to leaves of
         // one (as the far-apart spheres above), but four mesh triangles are always a leaf.
-        // Five are split: a root of two children, or of leaves once the collapse opens them.
+        // Five are split once, into two leaves of at most four (4 | 1, 3 | 2, …), which
+        // the root then holds side by side.
         let tri = |x: Float| [Vec3::new(x, 0.0, 0.0), Vec3::new(x + 1.0, 0.0, 0.0), Vec3::new(x, 1.0, 0.0)];
         let mesh = |n: usize| {
             let positions: Vec<Vec3> = (0..n).flat_map(|i| tri(10.0 * i as Float)).collect();
@@ -537,7 +539,8 @@ mod tests {
         assert_eq!((bvh.nodes.len(), bvh.nodes[0].count), (1, [4, 0, 0, 0]));
         let bvh = Bvh::build(&five);
         assert_well_formed(&bvh);
-        assert!(bvh.nodes[0].count.iter().all(|&n| n <= 4) && bvh.nodes[0].count.iter().sum::<u32>() <= 5);
-        assert!((0..WIDTH).filter(|&c| !bvh.nodes[0].is_empty_slot(c)).count() >= 2);
+        let [a, b, c, d] = bvh.nodes[0].count;
+        assert_eq!((bvh.nodes.len(), a + b, c, d), (1, 5, 0, 0), "{:?}", bvh.nodes[0].count);
+        assert!(a > 0 && b > 0);
     }
 }
