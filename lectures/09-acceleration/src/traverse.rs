@@ -156,7 +156,7 @@ impl Bvh<'_> {
                         // A leaf: its triangles at once, then its whole objects.
                         let lanes = &bvh.leaves.lanes[(current.child & !Next::LEAF) as usize];
                         let (mut hit, found) = sheared.hit_lanes(lanes, search);
-                        triangle_tests += (lanes.triangles_tested()) as u64;
+                        triangle_tests += lanes.triangles_tested() as u64;
                         while hit != 0 {
                             let k = hit.trailing_zeros() as usize;
                             hit &= hit - 1;
