@@ -34,7 +34,12 @@ impl Hit {
             outward_normal.is_finite() && outward_normal != Vec3::ZERO,
             "Hit::new needs a non-zero finite normal, found {outward_normal}"
         );
-        let n = outward_normal.try_normalize().unwrap_or(Vec3::Z);
+        Self::facing(ray, t, outward_normal.try_normalize().unwrap_or(Vec3::Z))
+    }
+
+    /// [`Hit::new`] for an outward normal `n` already normalised (its
+    /// `try_normalize` done by the caller, once, and reused): the same record.
+    pub fn facing(ray: &Ray, t: Float, n: Vec3) -> Self {
         let front_face = ray.dir.dot(n) < 0.0;
         Self {
             t,

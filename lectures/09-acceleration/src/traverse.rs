@@ -255,7 +255,7 @@ impl Bvh<'_> {
         count_n(Counter::IntersectionTests, triangle_tests);
         match triangle {
             Some((i, found)) => {
-                triangle_record(self.objects, self.primitives[i], &self.triangles[i], ray, found)
+                triangle_record(self.objects, self.primitives[i], self.leaves.normals[i], ray, found)
             }
             None => closest.hit(self.objects, ray),
         }
