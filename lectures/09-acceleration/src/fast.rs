@@ -351,6 +351,11 @@ impl<const KZ: usize> ShearedRay<KZ> {
         let (e0, e1, e2) = (edge(&p1, &p2), edge(&p2, &p0), edge(&p0, &p1));
         let negative = e0.cmplt(Vec4::ZERO) | e1.cmplt(Vec4::ZERO) | e2.cmplt(Vec4::ZERO);
         let positive = e0.cmpgt(Vec4::ZERO) | e1.cmpgt(Vec4::ZERO) | e2.cmpgt(Vec4::ZERO);
+        // No lane inside (the usual case): no t to compute.
+        if (!(negative & positive)).bitmask() & lanes.triangles == 0 {
+            let none = TriangleHit { t: Float::NAN, beta: Float::NAN, gamma: Float::NAN };
+            return (0, [none; 4]);
+        }
         let det = e0 + e1 + e2;
         let inv_det = Vec4::ONE / det;
         let t = (e0 * p0[2] + e1 * p1[2] + e2 * p2[2]) * inv_det;
