@@ -504,6 +504,30 @@ mod tests {
     }
 
     #[test]
+    fn a_range_starting_behind_the_origin_widens_each_lane_by_its_sign() {
+        // The box [−2, −1] × [−0.5, 1] × [−1, 1] behind the origin, the ray from it along
+        // (1, 0.5, 0) in a range from −5: x in the box for t ∈ [−2, −1], y for t ∈ [−1, 2]
+        // (1/0.5 = 2, exact): the ray touches the box at the single point t = −1, its edge.
+        // Each lane widened by its sign's factor, entries down and exits up, it is met,
+        // entered at or before −1.
+        let node = node_of(&[Aabb::new(Vec3::new(-2.0, -0.5, -1.0), Vec3::new(-1.0, 1.0, 1.0))]);
+        let ray = Ray::new(Vec3::ZERO, Vec3::new(1.0, 0.5, 0.0));
+        let range = Interval::new(-5.0, Float::INFINITY);
+        assert!(BoxRay::widens_each(range.min) && !BoxRay::widens_each(0.0));
+        let (entries, mask) = hit_children(&node, &ray, range);
+        assert_eq!(mask, 1);
+        assert!(entries[0] <= -1.0, "{}", entries[0]);
+        // The factors folded into 1/d, right only for t ≥ 0, would shrink the box here
+        // (x's exit −1 scaled up to −1 − 2γ₄, y's entry −1 down to −1 + 2γ₄): missed.
+        // That is why a range starting below 0 takes the other copy.
+        assert_eq!(node.hit_children(&BoxRay::<false>::new(&ray), range).1, 0);
+        // The same edge in front, at t = 1 (the box mirrored through the origin), for a
+        // range from 0: met with the folded factors.
+        let ahead = node_of(&[Aabb::new(Vec3::new(1.0, -1.0, -1.0), Vec3::new(2.0, 0.5, 1.0))]);
+        assert_eq!(ahead.hit_children(&BoxRay::<false>::new(&ray), Interval::POSITIVE).1, 1);
+    }
+
+    #[test]
     fn rays_along_a_face_meet_the_box_and_empty_slots_none() {
         // The box [0, 1]³ in slot 0, slots 1–3 empty. Rays along +z or −z (x and y
         // components +0 or −0) with the origin on the planes x = 0, x = 1, y = 0,

@@ -425,8 +425,8 @@ mod tests {
         // 10⁴ rays through a random mixed scene (every shape kind, a transformed sphere,
         // box, cylinder and cone, a plane, a 1,024-triangle torus): from anywhere in
         // [−8, 8]³, half in random directions, half aimed at a random object's box centre,
-        // one in ten axis-parallel in a component, with whole, shortened and late-starting
-        // ranges. The BVH must give brute force's hit, bit for bit.
+        // one in ten axis-parallel in a component, with whole, shortened, late-starting and
+        // early-starting (below 0) ranges. The BVH must give brute force's hit, bit for bit.
         let mut rng = Rng::new(7);
         let objects = mixed_scene(&mut rng);
         let (bvh, brute) = (Bvh::build(&objects), BruteForce::new(&objects));
@@ -449,6 +449,8 @@ mod tests {
             let range = match n % 5 {
                 0 => Interval::new(0.0, rng.range(0.5, 10.0)),
                 1 => Interval::new(rng.range(0.5, 5.0), Float::INFINITY),
+                // Starting behind the origin: the traversal's copy that widens each box lane.
+                2 => Interval::new(-rng.range(0.5, 5.0), Float::INFINITY),
                 _ => Interval::POSITIVE,
             };
             hits += assert_same(&bvh, &brute, &Ray::new(origin, dir), range) as usize;
