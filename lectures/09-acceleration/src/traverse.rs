@@ -120,8 +120,9 @@ impl Bvh<'_> {
     ///   watertight test runs on the four together, its shear of the ray
     ///   computed once per ray; only t, β and γ are found: the full [`Hit`]
     ///   (point, interpolated normal, uv) is built once, for the closest, when
-    ///   the traversal ends. Whole objects (spheres, boxes, transformed
-    ///   meshes) are hit through [`Primitive::hit`] as in brute force.
+    ///   the traversal ends, from a unit normal the build computed. Whole
+    ///   objects (spheres, boxes, transformed meshes) are hit through
+    ///   [`Primitive::hit`] as in brute force, out of the loop's code.
     /// - **Compact nodes** (see [`crate::Node`], 128 bytes) in one flat array,
     ///   and a tree built by the SAH (see [`Bvh::build`]).
     ///
