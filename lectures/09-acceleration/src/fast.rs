@@ -351,7 +351,7 @@ impl<const KZ: usize> ShearedRay<KZ> {
         let (e0, e1, e2) = (edge(&p1, &p2), edge(&p2, &p0), edge(&p0, &p1));
         let negative = e0.cmplt(Vec4::ZERO) | e1.cmplt(Vec4::ZERO) | e2.cmplt(Vec4::ZERO);
         let positive = e0.cmpgt(Vec4::ZERO) | e1.cmpgt(Vec4::ZERO) | e2.cmpgt(Vec4::ZERO);
-        // No lane inside (the usual case): no t to compute.
+        // No lane inside its triangle: no division, no t.
         if (!(negative & positive)).bitmask() & lanes.triangles == 0 {
             let none = TriangleHit { t: Float::NAN, beta: Float::NAN, gamma: Float::NAN };
             return (0, [none; 4]);

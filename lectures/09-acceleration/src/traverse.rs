@@ -253,8 +253,8 @@ impl Bvh<'_> {
         }
 
         /// The unbounded objects, every one: kept out of the traversal's code,
-        /// whose registers and stack frame they would crowd (measured: 4 % of
-        /// the bunny's time when inlined, though it has none).
+        /// whose registers and stack frame they would crowd (measured: 2–4 %
+        /// of the bunny's time when inlined, though it has none).
         #[inline(never)]
         fn unbounded(bvh: &Bvh, ray: &Ray, closest: &mut Closest) {
             for &primitive in &bvh.unbounded {
