@@ -1,9 +1,11 @@
 // INSTRUCTOR ONLY: left out of the handout; the reference traversal's fast kernels.
 //! The reference traversal's two kernels, with everything that depends on
 //! the ray alone computed once per ray: the four boxes of a node tested at
-//! once ([`Node::hit_children`] with a [`BoxRay`]), and lecture 03's
-//! watertight triangle test on a leaf's four triangles at once, with the
-//! ray's shear precomputed ([`ShearedRay::hit_lanes`] on [`LeafLanes`]).
+//! once ([`Node::hit_children`] with a [`BoxRay`]), or the eight of a
+//! [`WideNode`] on CPUs with AVX2, and lecture 03's watertight triangle test
+//! on a leaf's four triangles at once, with the ray's shear precomputed
+//! ([`ShearedRay::hit_lanes`] on [`LeafLanes`]); and the copies of the
+//! traversal's loop ([`closest_in_tree`], [`any_in_tree`]) made with them.
 //! Students traverse with [`crate::Aabb::hit`] and
 //! [`crate::Primitive::triangle_t`]; the answers are the same, the speed is
 //! not (`grader bench-rays`, benches/README.md). Book: §9.7 Ordered
@@ -14,9 +16,10 @@ use raylab::math::gamma;
 use raylab::scene::{Object, Shape};
 use raylab::{Float, Hit, Interval, Ray, Vec2, Vec3, Vec4};
 
-use crate::bvh::{MAX_LEAF, Node, WIDTH};
+use crate::bvh::{MAX_DEPTH, MAX_LEAF, Node, WIDTH};
 use crate::primitive::Primitive;
-use crate::traverse::STACK_SIZE;
+use crate::traverse::{Closest, any_in_tree, closest_in_tree};
+use crate::{Aabb, Bvh};
 use std::cell::RefCell;
 
 thread_local! {
@@ -25,8 +28,14 @@ thread_local! {
     /// use (a fresh array of [`STACK_SIZE`] entries per ray cost a third of
     /// the traversal's time, measured; a `Vec` reused the same way, its
     /// capacity checks and length kept in memory, about 5 %).
-    pub static STACK: RefCell<[Next; STACK_SIZE]> = const { RefCell::new([Next::ROOT; STACK_SIZE]) };
+    pub static STACK: RefCell<[Next; STACK_LEN]> = const { RefCell::new([Next::ROOT; STACK_LEN]) };
 }
+
+/// A stack of this many children never overflows, in either tree: a node
+/// visited takes one entry off and puts at most [`WIDE`] − 1 more on, and a
+/// path from the root has at most [`MAX_DEPTH`] nodes (the eight-wide tree is
+/// the four-wide one with levels merged: no deeper).
+pub const STACK_LEN: usize = (WIDE - 1) * MAX_DEPTH + 1;
 
 /// What the reference traversal visits next, or keeps waiting on its stack:
 /// a node, or a leaf's [`LeafLanes`] ([`Leaves::children`] says which), with
@@ -57,6 +66,15 @@ pub struct Leaves {
     pub lanes: Vec<LeafLanes>,
     /// `children[i][c]`: child c of node i (anything for an empty slot).
     pub children: Vec<[u32; WIDTH]>,
+    /// The tree again with eight children per node ([`WideNode`]), the
+    /// root first: built where the CPU has AVX2 ([`Leaves::avx2`]) and
+    /// [`Float`] is f32 (eight f32 lanes fill an AVX register; empty
+    /// otherwise), and then the one traversed.
+    pub wide: Vec<WideNode>,
+    /// Whether this CPU has the features the eight-wide traversal is
+    /// compiled for (AVX2 and the rest: [`avx2::detected`]), asked once, by
+    /// [`Leaves::new`], and set nowhere else: what makes calling it sound.
+    avx2: bool,
     /// `normals[i]`: the unit outward normal of primitive i if it is a mesh
     /// triangle, as its hit record has it before facing the ray (03's
     /// `hit_triangle` normalises the cross product, then [`Hit::new`] again:
@@ -147,6 +165,13 @@ impl Leaves {
                 leaves.lanes.push(lanes);
             }
             leaves.children.push(children);
+        }
+        #[cfg(target_arch = "x86_64")]
+        {
+            leaves.avx2 = avx2::detected();
+        }
+        if leaves.avx2 && size_of::<Float>() == 4 {
+            leaves.wide = WideNode::tree(nodes, &leaves.children);
         }
         leaves
     }
@@ -277,6 +302,306 @@ impl<const WIDEN_EACH: bool> BoxRay<WIDEN_EACH> {
             }
         }
         prepared
+    }
+}
+
+/// The reference's closest-hit search in the four-wide tree, for rays whose
+/// dominant axis is `KZ` and ranges that need `WIDEN_EACH`: one copy of
+/// [`closest_in_tree`] with [`Node::hit_children`] inlined.
+pub fn four_wide_closest<const KZ: usize, const WIDEN_EACH: bool>(
+    bvh: &Bvh,
+    ray: &Ray,
+    closest: &mut Closest,
+) -> u64 {
+    let (boxes, sheared) = (BoxRay::<WIDEN_EACH>::new(ray), ShearedRay::<KZ>::new(ray));
+    STACK.with_borrow_mut(|stack| {
+        closest_in_tree(bvh, ray, &sheared, closest, stack, |index, search| {
+            let (t_enter, met) = bvh.nodes[index].hit_children(&boxes, search);
+            (t_enter, met, &bvh.leaves.children[index])
+        })
+    })
+}
+
+/// The reference's any-hit search in the four-wide tree: [`any_in_tree`] with
+/// [`Node::hit_children`], as [`four_wide_closest`].
+pub fn four_wide_any<const KZ: usize, const WIDEN_EACH: bool>(
+    bvh: &Bvh,
+    ray: &Ray,
+    range: Interval,
+) -> (bool, u64) {
+    let (boxes, sheared) = (BoxRay::<WIDEN_EACH>::new(ray), ShearedRay::<KZ>::new(ray));
+    STACK.with_borrow_mut(|stack| {
+        any_in_tree(bvh, ray, &sheared, range, stack, |index, range| {
+            let (t_enter, met) = bvh.nodes[index].hit_children(&boxes, range);
+            (t_enter, met, &bvh.leaves.children[index])
+        })
+    })
+}
+
+/// The copy of a search (`$four` or `$eight`, generic over the dominant axis
+/// `KZ` and `WIDEN_EACH`) made for `$bvh`'s nodes (eight-wide where it has
+/// them), the dominant axis of `$ray` and the widening `$range` needs: each
+/// picked once per ray, as a function pointer, so that the loop has no test
+/// for them.
+macro_rules! copy_for {
+    ($four:ident, $eight:ident, $bvh:expr, $ray:expr, $range:expr) => {
+        match (
+            !$bvh.leaves.wide.is_empty(),
+            l03_polygons_triangles::dominant_axis($ray.dir),
+            crate::fast::BoxRay::widens_each($range.min),
+        ) {
+            (false, 0, false) => $four::<0, false>,
+            (false, 1, false) => $four::<1, false>,
+            (false, _, false) => $four::<2, false>,
+            (false, 0, true) => $four::<0, true>,
+            (false, 1, true) => $four::<1, true>,
+            (false, _, true) => $four::<2, true>,
+            (true, 0, false) => $eight::<0, false>,
+            (true, 1, false) => $eight::<1, false>,
+            (true, _, false) => $eight::<2, false>,
+            (true, 0, true) => $eight::<0, true>,
+            (true, 1, true) => $eight::<1, true>,
+            (true, _, true) => $eight::<2, true>,
+        }
+    };
+}
+pub(crate) use copy_for;
+
+/// The closest-hit search in the eight-wide tree ([`Leaves::wide`], which
+/// exists only where the CPU has AVX2), compiled for AVX2; the four-wide one
+/// on any other CPU.
+pub fn eight_wide_closest<const KZ: usize, const WIDEN_EACH: bool>(
+    bvh: &Bvh,
+    ray: &Ray,
+    closest: &mut Closest,
+) -> u64 {
+    #[cfg(target_arch = "x86_64")]
+    if bvh.leaves.avx2 {
+        #[allow(unsafe_code)]
+        // SAFETY: the function is compiled for the CPU features that `avx2` says
+        // this CPU has (detected by `Leaves::new`), which is all that calling a
+        // `#[target_feature]` function requires.
+        return unsafe { avx2::closest::<KZ, WIDEN_EACH>(bvh, ray, closest) };
+    }
+    four_wide_closest::<KZ, WIDEN_EACH>(bvh, ray, closest)
+}
+
+/// The any-hit search in the eight-wide tree, as [`eight_wide_closest`].
+pub fn eight_wide_any<const KZ: usize, const WIDEN_EACH: bool>(
+    bvh: &Bvh,
+    ray: &Ray,
+    range: Interval,
+) -> (bool, u64) {
+    #[cfg(target_arch = "x86_64")]
+    if bvh.leaves.avx2 {
+        #[allow(unsafe_code)]
+        // SAFETY: as in `eight_wide_closest`: this CPU has the features.
+        return unsafe { avx2::any::<KZ, WIDEN_EACH>(bvh, ray, range) };
+    }
+    four_wide_any::<KZ, WIDEN_EACH>(bvh, ray, range)
+}
+
+/// How many children a [`WideNode`] has.
+pub const WIDE: usize = 8;
+
+/// A node of eight children: the four-wide tree's node with some of its
+/// children replaced by theirs (grandchildren pulled up, the inner child with
+/// the largest box first, while they fit in eight slots), so that a ray
+/// decides eight children in one box test, of about the cost of a four-wide
+/// one on AVX's 256-bit registers, and goes down half as many levels (the
+/// bunny: 10,225 four-wide nodes in 10 levels, 5,099 eight-wide ones in 6).
+/// The planes as in [`Node`], eight lanes of f32; the children as
+/// [`Next::child`] names them, the leaves the same [`LeafLanes`].
+/// 256 bytes, four cache lines, aligned to one. Book: §9.7 Ordered traversal.
+#[derive(Clone, Copy, Debug)]
+#[repr(C, align(64))]
+pub struct WideNode {
+    /// `planes[a][i]`: plane a of child i's box (a point at +∞ in an empty
+    /// slot), as lane i of [`Node::planes`]`[a]`.
+    planes: [[f32; WIDE]; 6],
+    /// Child i as [`Next::child`] names it (anything in an empty slot).
+    children: [u32; WIDE],
+}
+
+impl WideNode {
+    /// A node whose eight slots are all empty.
+    const EMPTY: WideNode = WideNode { planes: [[f32::INFINITY; WIDE]; 6], children: [0; WIDE] };
+
+    /// The eight-wide tree of the four-wide `nodes`, whose children are named
+    /// by `children` (as [`Leaves::children`] names them): the root first,
+    /// each node before its subtrees.
+    fn tree(nodes: &[Node], children: &[[u32; WIDTH]]) -> Vec<WideNode> {
+        let mut wide = Vec::with_capacity(nodes.len());
+        if !nodes.is_empty() {
+            WideNode::add(nodes, children, 0, &mut wide);
+        }
+        wide
+    }
+
+    /// Adds to `wide` the node standing for four-wide node `n`, then its
+    /// subtrees; returns its index.
+    fn add(nodes: &[Node], children: &[[u32; WIDTH]], n: usize, wide: &mut Vec<WideNode>) -> u32 {
+        // Node n's children: their boxes and names.
+        let slots = |n: usize| {
+            (0..WIDTH)
+                .filter(move |&c| !nodes[n].is_empty_slot(c))
+                .map(move |c| (nodes[n].child_bounds(c), children[n][c]))
+        };
+        let mut list: Vec<(Aabb, u32)> = slots(n).collect();
+        // The inner child with the largest box whose children fit in its place and
+        // the free slots, replaced by them; until none fits.
+        while let Some(k) = (0..list.len())
+            .filter(|&k| {
+                list[k].1 & Next::LEAF == 0 && list.len() - 1 + slots(list[k].1 as usize).count() <= WIDE
+            })
+            .max_by(|&a, &b| list[a].0.surface_area().total_cmp(&list[b].0.surface_area()))
+        {
+            let inner = list[k].1 as usize;
+            list.splice(k..k + 1, slots(inner));
+        }
+        let index = wide.len();
+        wide.push(WideNode::EMPTY);
+        let mut node = WideNode::EMPTY;
+        for (i, &(bounds, child)) in list.iter().enumerate() {
+            for a in 0..3 {
+                // The identity in f32, the only precision that builds this tree.
+                #[allow(clippy::unnecessary_cast)]
+                let (min, max) = (bounds.min[a] as f32, bounds.max[a] as f32);
+                (node.planes[a][i], node.planes[3 + a][i]) = (min, max);
+            }
+            node.children[i] = match child & Next::LEAF {
+                0 => WideNode::add(nodes, children, child as usize, wide),
+                _ => child,
+            };
+        }
+        wide[index] = node;
+        index as u32
+    }
+}
+
+/// The eight-wide traversal, compiled for AVX2 (safe code: the intrinsics
+/// are safe to call in functions compiled for their features, and bytemuck
+/// moves eight f32 in and out of an AVX register). Everything inlined into
+/// [`avx2::closest`] and [`avx2::any`] — the loop, the box test, 03's
+/// triangle test on a leaf's lanes — is compiled for AVX2, so the four-lane
+/// (SSE) parts get AVX's encodings too.
+#[cfg(target_arch = "x86_64")]
+mod avx2 {
+    use super::*;
+    use std::arch::x86_64::{
+        __m256, _CMP_LT_OS, _mm256_cmp_ps, _mm256_max_ps, _mm256_min_ps, _mm256_movemask_ps, _mm256_mul_ps,
+        _mm256_set1_ps, _mm256_sub_ps,
+    };
+
+    /// Whether this CPU has every feature the functions here are compiled
+    /// for (std caches the answer).
+    pub fn detected() -> bool {
+        is_x86_feature_detected!("avx2")
+            && is_x86_feature_detected!("bmi1")
+            && is_x86_feature_detected!("lzcnt")
+            && is_x86_feature_detected!("popcnt")
+    }
+
+    /// [`BoxRay`] in eight lanes.
+    struct WideRay {
+        origin_min: [__m256; 3],
+        origin_max: [__m256; 3],
+        inv_min: [__m256; 3],
+        inv_max: [__m256; 3],
+    }
+
+    impl WideRay {
+        #[target_feature(enable = "avx2")]
+        #[allow(clippy::unnecessary_cast)] // the identity in f32, the only precision traversed here
+        fn new<const WIDEN_EACH: bool>(ray: &BoxRay<WIDEN_EACH>) -> Self {
+            let lanes = |v: &[Vec4; 3]| v.map(|lanes| _mm256_set1_ps(lanes.x as f32));
+            WideRay {
+                origin_min: lanes(&ray.origin_min),
+                origin_max: lanes(&ray.origin_max),
+                inv_min: lanes(&ray.inv_min),
+                inv_max: lanes(&ray.inv_max),
+            }
+        }
+    }
+
+    impl WideNode {
+        /// The eight children's boxes tested against `ray` at once: each lane
+        /// exactly as [`Node::hit_children`] tests one (the same operations
+        /// in the same order, on the same numbers).
+        #[target_feature(enable = "avx2")]
+        #[allow(clippy::unnecessary_cast)] // the identity in f32, the only precision traversed here
+        fn hit_children<const WIDEN_EACH: bool>(
+            &self,
+            ray: &WideRay,
+            range: Interval,
+        ) -> ([Float; WIDE], u32) {
+            let slab = |a: usize| {
+                let (min, max): (__m256, __m256) =
+                    (bytemuck::cast(self.planes[a]), bytemuck::cast(self.planes[3 + a]));
+                let t_min = _mm256_mul_ps(_mm256_sub_ps(min, ray.origin_min[a]), ray.inv_min[a]);
+                let t_max = _mm256_mul_ps(_mm256_sub_ps(max, ray.origin_max[a]), ray.inv_max[a]);
+                (_mm256_min_ps(t_min, t_max), _mm256_max_ps(t_min, t_max))
+            };
+            let ((near_x, far_x), (near_y, far_y), (near_z, far_z)) = (slab(0), slab(1), slab(2));
+            let (range_min, range_max) = (_mm256_set1_ps(range.min as f32), _mm256_set1_ps(range.max as f32));
+            let mut enter = _mm256_max_ps(_mm256_max_ps(near_x, near_y), _mm256_max_ps(near_z, range_min));
+            let mut exit = _mm256_min_ps(_mm256_min_ps(far_x, far_y), _mm256_min_ps(far_z, range_max));
+            if WIDEN_EACH {
+                let (down, up) = (_mm256_set1_ps(WIDEN_DOWN as f32), _mm256_set1_ps(WIDEN_UP as f32));
+                enter = _mm256_min_ps(_mm256_mul_ps(enter, down), _mm256_mul_ps(enter, up));
+                exit = _mm256_max_ps(_mm256_mul_ps(exit, up), _mm256_mul_ps(exit, down));
+            }
+            let met = _mm256_movemask_ps(_mm256_cmp_ps::<_CMP_LT_OS>(enter, exit)) as u32;
+            (bytemuck::cast::<__m256, [f32; WIDE]>(enter).map(Float::from), met)
+        }
+    }
+
+    /// [`WideNode::hit_children`] where this CPU has the features it is
+    /// compiled for (None elsewhere): for the tests, which compare it lane by
+    /// lane with [`Node::hit_children`].
+    #[cfg(test)]
+    pub fn hit_children_here<const WIDEN_EACH: bool>(
+        node: &WideNode,
+        ray: &BoxRay<WIDEN_EACH>,
+        range: Interval,
+    ) -> Option<([Float; WIDE], u32)> {
+        #[allow(unsafe_code)]
+        // SAFETY: the functions are compiled for the features just detected.
+        detected().then(|| unsafe { node.hit_children::<WIDEN_EACH>(&WideRay::new(ray), range) })
+    }
+
+    /// [`closest_in_tree`] on the eight-wide nodes.
+    #[target_feature(enable = "avx2,bmi1,lzcnt,popcnt")]
+    pub fn closest<const KZ: usize, const WIDEN_EACH: bool>(
+        bvh: &Bvh,
+        ray: &Ray,
+        closest: &mut Closest,
+    ) -> u64 {
+        let (boxes, sheared) = (WideRay::new(&BoxRay::<WIDEN_EACH>::new(ray)), ShearedRay::<KZ>::new(ray));
+        STACK.with_borrow_mut(|stack| {
+            closest_in_tree(bvh, ray, &sheared, closest, stack, |index, search| {
+                let node = &bvh.leaves.wide[index];
+                let (t_enter, met) = node.hit_children::<WIDEN_EACH>(&boxes, search);
+                (t_enter, met, &node.children)
+            })
+        })
+    }
+
+    /// [`any_in_tree`] on the eight-wide nodes.
+    #[target_feature(enable = "avx2,bmi1,lzcnt,popcnt")]
+    pub fn any<const KZ: usize, const WIDEN_EACH: bool>(
+        bvh: &Bvh,
+        ray: &Ray,
+        range: Interval,
+    ) -> (bool, u64) {
+        let (boxes, sheared) = (WideRay::new(&BoxRay::<WIDEN_EACH>::new(ray)), ShearedRay::<KZ>::new(ray));
+        STACK.with_borrow_mut(|stack| {
+            any_in_tree(bvh, ray, &sheared, range, stack, |index, range| {
+                let node = &bvh.leaves.wide[index];
+                let (t_enter, met) = node.hit_children::<WIDEN_EACH>(&boxes, range);
+                (t_enter, met, &node.children)
+            })
+        })
     }
 }
 
@@ -637,6 +962,149 @@ mod tests {
         }
         eprintln!("leaf lanes: {hits} hits ({edge_hits} on an edge), all 03's t, β and γ bit for bit");
         assert!(hits > 10_000 && edge_hits > 100, "only {hits} hits, {edge_hits} on an edge");
+    }
+
+    /// Two random nodes of four boxes and the eight-wide node holding both's
+    /// boxes, first's in lanes 0–3 and second's in lanes 4–7.
+    fn two_nodes_and_a_wide_one(rng: &mut Rng, n: usize) -> ([Node; 2], WideNode) {
+        let nodes =
+            [0, 1].map(|h| node_of(&(0..4).map(|k| random_box(rng, 8 * n + 4 * h + k)).collect::<Vec<_>>()));
+        let mut wide = WideNode::EMPTY;
+        for (h, node) in nodes.iter().enumerate() {
+            for (a, plane) in node.planes.iter().enumerate() {
+                for lane in 0..WIDTH {
+                    #[allow(clippy::unnecessary_cast)] // f32 is the only precision with wide nodes
+                    let value = plane[lane] as f32;
+                    wide.planes[a][WIDTH * h + lane] = value;
+                }
+            }
+        }
+        (nodes, wide)
+    }
+
+    #[test]
+    fn eight_lanes_are_the_four_lane_test_bit_for_bit() {
+        // 10⁴ eight-wide nodes (two random four-wide nodes side by side) against random
+        // rays and ranges (whole, shortened, late-starting, starting below 0, a fifth of
+        // the rays axis-parallel): each lane's entry t and met bit are those of the same
+        // box's lane in the four-wide test, bit for bit, for both copies of the range's
+        // widening. The AVX2 test then inherits everything the four-wide one is tested
+        // for (never missing what Aabb::hit meets, faces, empty slots).
+        if size_of::<Float>() != 4 {
+            eprintln!("SKIPPED eight_lanes_are_the_four_lane_test_bit_for_bit: no eight-wide nodes in f64");
+            return;
+        }
+        #[cfg(target_arch = "x86_64")]
+        {
+            let mut rng = Rng::new(33);
+            let mut met = 0;
+            for n in 0..10_000 {
+                let (nodes, wide) = two_nodes_and_a_wide_one(&mut rng, n);
+                let (ray, range) = random_query(&mut rng, n);
+                let eight = match BoxRay::widens_each(range.min) {
+                    true => avx2::hit_children_here(&wide, &BoxRay::<true>::new(&ray), range),
+                    false => avx2::hit_children_here(&wide, &BoxRay::<false>::new(&ray), range),
+                };
+                let Some((entries, mask)) = eight else {
+                    eprintln!("SKIPPED eight_lanes_are_the_four_lane_test_bit_for_bit: this CPU has no AVX2");
+                    return;
+                };
+                for (h, node) in nodes.iter().enumerate() {
+                    let (four_entries, four_mask) = hit_children(node, &ray, range);
+                    assert_eq!((mask >> (WIDTH * h)) & 0xf, four_mask, "{ray:?} {range:?} node {h}");
+                    for lane in 0..WIDTH {
+                        let (a, b) = (entries[WIDTH * h + lane], four_entries[lane]);
+                        assert!(a.to_bits() == b.to_bits(), "lane {lane} of node {h}: {a} against {b}");
+                    }
+                    met += four_mask.count_ones();
+                }
+                assert_eq!(mask >> (2 * WIDTH), 0, "no lane beyond the eighth");
+            }
+            eprintln!("eight-wide box test: {met} lanes met, all as in the four-wide test");
+            assert!(met > 8_000, "{met}: too few lanes met for the test to mean much");
+        }
+    }
+
+    #[test]
+    fn the_eight_wide_tree_holds_the_four_wide_ones_children() {
+        // On the mixed scene and on a 20,000-triangle torus: walking the eight-wide tree
+        // from its root reaches every leaf of the four-wide one exactly once, and every
+        // wide node once; a leaf's box in its wide node is the one the four-wide tree gave
+        // it, an inner child's box the union of its own children's (as in the four-wide
+        // tree, whose boxes are their subtrees' bounds); the wide tree has fewer levels.
+        let torus = crate::test_support::object(
+            Shape::Mesh(std::sync::Arc::new(raylab::scene::Mesh::torus(1.0, 0.4, 200, 50))),
+            0,
+            None,
+        );
+        for objects in [crate::test_support::mixed_scene(&mut Rng::new(5)), vec![torus]] {
+            let bvh = crate::Bvh::build(&objects);
+            if bvh.leaves.wide.is_empty() {
+                eprintln!(
+                    "SKIPPED the_eight_wide_tree_holds_the_four_wide_ones_children: no eight-wide tree here (no AVX2, or f64)"
+                );
+                return;
+            }
+            // Every leaf of the four-wide tree, by name, with its box.
+            let mut leaf_boxes = std::collections::HashMap::new();
+            for (node, children) in bvh.nodes.iter().zip(&bvh.leaves.children) {
+                for c in (0..WIDTH).filter(|&c| !node.is_empty_slot(c) && node.is_leaf(c)) {
+                    leaf_boxes.insert(children[c], node.child_bounds(c));
+                }
+            }
+            // The boxes of a wide node's children, empty slots left out.
+            let child_boxes = |node: &WideNode| -> Vec<Aabb> {
+                (0..WIDE)
+                    .filter(|&i| node.planes[0][i] != f32::INFINITY)
+                    .map(|i| {
+                        let p = |a: usize| Float::from(node.planes[a][i]);
+                        Aabb::new(Vec3::new(p(0), p(1), p(2)), Vec3::new(p(3), p(4), p(5)))
+                    })
+                    .collect()
+            };
+            let (wide, mut leaves, mut visited) =
+                (&bvh.leaves.wide, vec![0; bvh.leaves.lanes.len()], vec![0; bvh.leaves.wide.len()]);
+            let mut depth = 0;
+            let mut todo = vec![(0u32, 1)];
+            while let Some((index, level)) = todo.pop() {
+                visited[index as usize] += 1;
+                depth = depth.max(level);
+                let node = &wide[index as usize];
+                for i in 0..WIDE {
+                    if node.planes[0][i] == f32::INFINITY {
+                        assert!((0..6).all(|a| node.planes[a][i] == f32::INFINITY), "an empty slot is empty");
+                        continue;
+                    }
+                    let child = node.children[i];
+                    let b = match child & Next::LEAF {
+                        0 => {
+                            todo.push((child, level + 1));
+                            child_boxes(&wide[child as usize]).into_iter().reduce(Aabb::union).unwrap()
+                        }
+                        _ => {
+                            leaves[(child & !Next::LEAF) as usize] += 1;
+                            leaf_boxes[&child]
+                        }
+                    };
+                    #[allow(clippy::unnecessary_cast)] // f32, the only precision with wide nodes
+                    let planes = [b.min.x, b.min.y, b.min.z, b.max.x, b.max.y, b.max.z].map(|p| p as f32);
+                    assert_eq!(
+                        (0..6).map(|a| node.planes[a][i]).collect::<Vec<_>>(),
+                        planes,
+                        "node {index} slot {i}"
+                    );
+                }
+            }
+            assert!(leaves.iter().all(|&n| n == 1), "every leaf reached once");
+            assert!(visited.iter().all(|&n| n == 1), "every wide node reached once");
+            let four_depth = bvh.depth() - 1;
+            assert!(depth < four_depth, "{depth} wide levels, {four_depth} four-wide");
+            eprintln!(
+                "{} four-wide nodes in {four_depth} levels, {} wide in {depth}",
+                bvh.nodes.len(),
+                wide.len()
+            );
+        }
     }
 
     #[test]
