@@ -413,13 +413,36 @@ mod code {
     /// One step outward from the sum (in f64) is what the box may give at most; at least the
     /// exact sum. For an f32 build the f64 sum of two f32 is exact; in an f64 build it is the
     /// rounded sum, which the box may equal.
+    /// Knuth's two-sum: a + b exactly, as the rounded sum s and its error e (a + b = s + e).
+    fn two_sum(a: f64, b: f64) -> (f64, f64) {
+        let s = a + b;
+        let b_part = s - a;
+        (s, (a - (s - b_part)) + (b - b_part))
+    }
+
+    /// Whether x ≤ a + b, the exact sum.
+    fn at_most_sum(x: f64, a: f64, b: f64) -> bool {
+        let (s, e) = two_sum(a, b);
+        x < s || (x == s && e >= 0.0)
+    }
+
+    /// Whether x ≥ a + b, the exact sum.
+    fn at_least_sum(x: f64, a: f64, b: f64) -> bool {
+        let (s, e) = two_sum(a, b);
+        x > s || (x == s && e <= 0.0)
+    }
+
     pub(super) fn sphere_cases(bounds: SphereBoundsFn) -> CheckResult {
         // (0.1, −2, 3) and r = 0.3 in f32: 0.1 + 0.3 rounds down (to 0.4000000060 below the exact
-        // 0.4000000134), so a box without outward rounding misses the sphere's rim by 7·10⁻⁹.
+        // 0.4000000134), so a box without outward rounding misses the sphere's rim by 7·10⁻⁹. In
+        // f64, 0.7 + 0.1 rounds down (to 0.79999999999999993 below the exact
+        // 0.79999999999999996): the same mistake, caught in either precision. The box must hold
+        // c ± r exactly (compared with Knuth's two-sum, exact in both precisions).
         for (center, radius) in [
             (v(1.0, -2.0, 3.0), 0.5),
             (v(0.1, -3.7, 1e3), 0.3),
             (v(0.1, 0.2, -0.3), 0.3),
+            (v(0.7, -0.7, 0.1), 0.1),
             (v(5.0, 6.0, 7.0), 0.0),
         ] {
             let b = bounds(center, radius);
@@ -438,16 +461,17 @@ mod code {
                     ));
                 }
                 let centre_missing = (got_lo + r).abs() <= slack && radius > 0.0 && c != 0.0;
+                let holds = at_most_sum(got_lo, c, -r) && at_least_sum(got_hi, c, r);
                 let cause = if centre_missing {
                     "the box is around the centre: c − r ≤ p ≤ c + r, not −r ≤ p ≤ r"
-                } else if got_lo > lo || got_hi < hi {
+                } else if !holds {
                     "round each end outward by one step, (c − r).next_down() and (c + r).next_up(): c ± r is \
                      rounded and may land inside the sphere"
                 } else {
                     "c − r ≤ p ≤ c + r on every axis, rounded outward by one step"
                 };
                 ensure(
-                    got_lo <= lo && got_hi >= hi && lo - got_lo <= slack && got_hi - hi <= slack,
+                    holds && lo - got_lo <= slack && got_hi - hi <= slack,
                     &case,
                     format!("[{lo:.9}, {hi:.9}] on axis {k}, rounded outward by at most {slack:.1e}"),
                     format!("[{got_lo:.9}, {got_hi:.9}]"),
@@ -455,7 +479,7 @@ mod code {
                 )?;
             }
         }
-        Ok("4 spheres".into())
+        Ok("5 spheres".into())
     }
 
     pub(super) fn triangle_cases(bounds: TriangleBoundsFn) -> CheckResult {
@@ -1030,10 +1054,8 @@ mod tests {
     #[test]
     fn planted_bounds_mistakes_are_caught() {
         caught(sphere_cases(|_, r| Aabb::new(-Vec3::splat(r), Vec3::splat(r))), "around the centre");
-        // Only f32 rounds 0.1 + 0.3 inward; the f64 check compares with the f64 sum itself.
-        if Float::MANTISSA_DIGITS == 24 {
-            caught(sphere_cases(|c, r| Aabb::new(c - r, c + r)), "outward");
-        }
+        // f32 rounds 0.1 + 0.3 inward, f64 0.7 + 0.1: caught in both precisions.
+        caught(sphere_cases(|c, r| Aabb::new(c - r, c + r)), "outward");
         caught(triangle_cases(|t| Aabb::new(t[0].min(t[1]), t[0].max(t[1]))), "all three corners");
         caught(
             transform_cases(|b, m| {
