@@ -25,9 +25,10 @@ use std::cell::RefCell;
 thread_local! {
     /// The reference traversal's stack, one per thread, reused by every ray:
     /// nothing to allocate or clear per ray, only a count of the entries in
-    /// use (a fresh array of [`STACK_SIZE`] entries per ray cost a third of
-    /// the traversal's time, measured; a `Vec` reused the same way, its
-    /// capacity checks and length kept in memory, about 5 %).
+    /// use (a fresh array per ray, of the 193 entries the four-wide tree
+    /// needs, [`crate::STACK_SIZE`], cost a third of the traversal's time,
+    /// measured; a `Vec` reused the same way, its capacity checks and length
+    /// kept in memory, about 5 %). [`STACK_LEN`] entries, enough for both trees.
     pub static STACK: RefCell<[Next; STACK_LEN]> = const { RefCell::new([Next::ROOT; STACK_LEN]) };
 }
 

@@ -237,8 +237,9 @@ impl Bvh<'_> {
 /// The tree's part of the closest-hit search of [`Bvh::closest_hit`]: what it
 /// finds is offered to `closest` (a triangle of the leaves' lanes as its lane
 /// result, [`Closest::offer_lane`]); returns the number of triangle tests made
-/// (only that: a bigger result, returned through memory, was read back before
-/// its parts were stored, a stall per ray). For a
+/// (only that, in a register: a 40-byte result, returned through memory, was
+/// copied by one wide load just after the loop had stored it in pieces, which
+/// the CPU cannot forward from its store buffer: a stall per ray). For a
 /// ray `sheared` for its dominant axis `KZ` (a constant, so that the triangle
 /// test picks its coordinates with no test), with nodes of `N` children:
 /// `node(index, search)` tests node `index`'s children against the range
