@@ -23,7 +23,7 @@ pub fn table(ws: &Workspace, grade: &Grade) -> String {
     for (lecture, verdicts) in &by_lecture {
         let folder = ws.lecture(lecture).map_or_else(|| lecture.to_string(), |l| l.folder.clone());
         let got: u32 = verdicts.iter().map(|v| v.points).sum();
-        let max: u32 = verdicts.iter().filter(|v| v.status != Status::Skipped).map(|v| v.info.points).sum();
+        let max: u32 = verdicts.iter().map(|v| v.info.points).sum();
         let _ = writeln!(text, "\n{folder:<width$}  {:>13}  {got:>3}/{max}", "", width = width + 2);
         let untouched = |v: &&Verdict| matches!(v.status, Status::NotStarted | Status::Blocked);
         if verdicts.iter().all(untouched) && verdicts.iter().any(|v| v.status == Status::NotStarted) {
@@ -42,11 +42,11 @@ pub fn table(ws: &Workspace, grade: &Grade) -> String {
                 "  {:<width$}  {:<13}  {:>3}/{}",
                 v.info.short(),
                 v.status.label(),
-                if v.status == Status::Skipped { "-".to_owned() } else { v.points.to_string() },
+                v.points,
                 v.info.points
             );
             match v.status {
-                Status::Passed | Status::NotStarted | Status::Skipped => {}
+                Status::Passed | Status::NotStarted => {}
                 Status::Failed => {
                     if let Some(f) = &v.failure {
                         let _ = writeln!(text, "      case:     {}", f.case);
@@ -77,7 +77,7 @@ pub fn table(ws: &Workspace, grade: &Grade) -> String {
     let _ = writeln!(
         text,
         "\ntotal {got}/{max} points: {} passed, {} failed, {} not started, {} blocked, {} do not compile, {} crashed, \
-         {} timed out, {} skipped ({:.1} s)",
+         {} timed out ({:.1} s)",
         count(Status::Passed),
         count(Status::Failed),
         count(Status::NotStarted),
@@ -85,7 +85,6 @@ pub fn table(ws: &Workspace, grade: &Grade) -> String {
         count(Status::DoesNotCompile),
         count(Status::Crashed),
         count(Status::TimedOut),
-        count(Status::Skipped),
         grade.seconds
     );
     text

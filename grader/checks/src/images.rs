@@ -1,19 +1,20 @@
 //! Image checks: every `lectures/NN-name/scenes/S.toml` rendered with the
 //! student's code and compared with the reference snapshots
-//! `lectures/NN-name/snapshots/S.png` (shaded), `S.id.png`, `S.depth.exr` and
-//! `S.normal.exr`, which `grader bless` writes.
+//! `lectures/NN-name/snapshots/S.png` (lecture NN's stage), `S.final.png`
+//! (the complete tracer), `S.id.png`, `S.depth.exr` and `S.normal.exr`, which
+//! `grader bless` writes.
 //!
 //! Checks per scene:
-//! - `NN/geometry/S` (lectures 01–04 and 09): the object-id, depth and normal images, made with the
-//!   intersections of the lecture that introduces the scene's shapes (02 for
-//!   spheres and planes, 03 for boxes, polygons and meshes, 04 for quadrics
-//!   and transforms, 09's hierarchy for its own big scenes; lecture 01's
-//!   camera scenes hold boxes and cylinders, so 04's). It needs no
-//!   shading, so it is lecture 02–04's own image check.
-//! - `NN/image/S`: the shaded image from the complete tracer (lectures 01–10).
-//!   When it differs, the geometry is compared first, and the differences
-//!   are located (which materials, facing the light or not, speckled or in
-//!   patches) to name the likely stage.
+//! - `NN/image/S`: the scene drawn by lecture NN's stage ([`crate::stages`]):
+//!   the kit and lectures 01–NN only, so it is graded as soon as lecture NN
+//!   is done. When it differs, the geometry is compared first (from stage 02
+//!   on), and the differences are located to name the likely exercise.
+//! - `NN/geometry/S` (lectures 02–04 and 09): the object-id, depth and normal
+//!   images, made with the intersections of the lecture (02 for spheres and
+//!   planes, 03 for boxes, polygons and meshes, 04 for quadrics and
+//!   transforms, 09's hierarchy for its own big scenes).
+//! - `10/final/NN-S` (lectures 01–09): the same scene from the complete tracer
+//!   (lectures 01–10): the course's final pictures, graded with lecture 10.
 
 use std::path::{Path, PathBuf};
 
@@ -21,6 +22,7 @@ use raylab::compare::compare;
 use raylab::{Color, Float, Image, Scene, Vec3};
 
 use crate::check::{CheckResult, Failure, Images, Info, Kind, Meta, fail};
+use crate::stages;
 
 /// A pixel differs when one of its 8-bit sRGB channels moves by more than
 /// this many steps: the f32 and f64 builds differ by a step or two where
@@ -121,9 +123,10 @@ fn sorted_entries(dir: &Path) -> Result<Vec<PathBuf>, String> {
     Ok(paths)
 }
 
-/// The geometry and image checks of every scene, as the grader lists them.
+/// The geometry, image and final checks of every scene, as the grader lists them.
 pub fn infos() -> Vec<Info> {
     let mut infos = Vec::new();
+    let mut finals = Vec::new();
     for file in scene_files(None).unwrap_or_default() {
         let name: &'static str = Box::leak(file.name().into_boxed_str());
         let geometry = Meta {
@@ -131,54 +134,68 @@ pub fn infos() -> Vec<Info> {
             name,
             kind: Kind::Image,
             points: 1,
-            needs: &[],
+            needs: stages::needs(&file.lecture),
             about: "object-id, depth and normal images against the reference's",
         };
         if has_geometry_check(&file.lecture) {
-            infos.push(Info::new(&file.lecture, &geometry, false, geometry_available(&file.lecture)));
+            infos.push(Info::new(&file.lecture, &geometry, false, stages::built(&file.lecture)));
         }
-        let image = Meta {
-            exercise: "image",
-            name,
-            about: "the shaded image from the complete tracer (lectures 01–10) against the snapshot",
-            ..geometry
-        };
-        infos.push(Info::new(&file.lecture, &image, false, cfg!(feature = "l10")));
+        let image = Meta { exercise: "image", about: stages::about(&file.lecture), ..geometry };
+        infos.push(Info::new(&file.lecture, &image, false, stages::built(&file.lecture)));
+        if file.lecture != FINAL_STAGE {
+            let name: &'static str = Box::leak(format!("{}-{}", file.lecture, file.name()).into_boxed_str());
+            let about =
+                "the complete tracer (lectures 01–10) on an earlier lecture's scene, against the snapshot";
+            let last = Meta { exercise: "final", name, needs: stages::needs(FINAL_STAGE), about, ..geometry };
+            finals.push(Info::new(FINAL_STAGE, &last, false, stages::built(FINAL_STAGE)));
+        }
     }
+    infos.extend(finals);
     infos
 }
 
-/// Lectures 01–04 (cameras and intersections) and 09 (the hierarchy) are
-/// graded on their scenes' geometry; for the others the geometry is only
-/// compared to explain a failed image.
+/// The lecture whose stage is the complete tracer, and that grades every
+/// other lecture's scenes with it (`10/final/NN-S`).
+const FINAL_STAGE: &str = "10";
+
+/// Lectures 02–04 (intersections) and 09 (the hierarchy) are graded on their
+/// scenes' geometry; for the others the geometry is only compared to explain
+/// a failed image.
 fn has_geometry_check(lecture: &str) -> bool {
-    matches!(lecture, "01" | "02" | "03" | "04" | "09")
+    matches!(lecture, "02" | "03" | "04" | "09")
 }
 
-/// Whether the intersections that draw lecture `lecture`'s scenes are built.
-fn geometry_available(lecture: &str) -> bool {
-    match lecture {
-        "02" => cfg!(feature = "l02"),
-        "03" => cfg!(feature = "l03"),
-        "09" => cfg!(feature = "l09"),
-        _ => cfg!(feature = "l04"),
-    }
-}
-
-/// Runs `NN/geometry/S` or `NN/image/S`, writing images under `out`; `None`
-/// when the id names no scene check.
+/// Runs `NN/geometry/S`, `NN/image/S` or `10/final/NN-S`, writing images
+/// under `out`; `None` when the id names no scene check of this build.
 pub fn run(id: &str, out: &Path) -> Option<CheckResult> {
     let mut parts = id.splitn(3, '/');
     let (lecture, kind, name) = (parts.next()?, parts.next()?, parts.next()?);
-    let file = scene_files(None).ok()?.into_iter().find(|f| f.lecture == lecture && f.name() == name)?;
-    let dir = out.join(&file.lecture).join(file.name());
+    let files = scene_files(None).ok()?;
     match kind {
-        "geometry" if has_geometry_check(lecture) && geometry_available(lecture) => {
+        "geometry" if has_geometry_check(lecture) && stages::built(lecture) => {
+            let file = files.into_iter().find(|f| f.lecture == lecture && f.name() == name)?;
             Some(check_geometry(&file))
         }
-        "image" if cfg!(feature = "l10") => Some(check_image(&file, &dir)),
+        "image" if stages::built(lecture) => {
+            let file = files.into_iter().find(|f| f.lecture == lecture && f.name() == name)?;
+            let dir = out.join(&file.lecture).join(file.name());
+            Some(check_image(&file, lecture, &dir))
+        }
+        "final" if lecture == FINAL_STAGE && stages::built(FINAL_STAGE) => {
+            let file = files
+                .into_iter()
+                .find(|f| f.lecture != FINAL_STAGE && format!("{}-{}", f.lecture, f.name()) == name)?;
+            let dir = out.join(FINAL_STAGE).join(format!("final-{name}"));
+            Some(check_image(&file, FINAL_STAGE, &dir))
+        }
         _ => None,
     }
+}
+
+/// The snapshot of `file` drawn by stage `stage`: `S.png` by its own lecture's stage, `S.final.png` by
+/// the complete tracer.
+fn stage_snapshot(file: &SceneFile, stage: &str) -> PathBuf {
+    file.snapshot(if stage == file.lecture { ".png" } else { ".final.png" })
 }
 
 /// The three geometry images of `scene` drawn with the intersections of the
@@ -342,22 +359,15 @@ fn check_geometry(file: &SceneFile) -> CheckResult {
     }
 }
 
-#[cfg(not(feature = "l10"))]
-fn check_image(_: &SceneFile, _: &Path) -> CheckResult {
-    unreachable!("image checks run only when every lecture is built")
-}
-
-/// Renders `file` with its `[render]` settings and compares it with its
-/// snapshot; writes expected / yours / diff (the FLIP error map) into `dir`.
-#[cfg(feature = "l10")]
-fn check_image(file: &SceneFile, dir: &Path) -> CheckResult {
-    use crate::tracer::{render_scene, scene_sampling, scene_settings};
+/// Renders `file` with stage `stage` (its `[render]` settings where the
+/// stage traces) and compares it with the stage's snapshot; writes expected /
+/// yours / diff (the FLIP error map) into `dir`.
+fn check_image(file: &SceneFile, stage: &str, dir: &Path) -> CheckResult {
     let case = format!("{}/{}", file.folder, file.name());
     let scene = raylab::scene::load(&file.scene).map_err(|e| fail(&case, "the scene loads", e, ""))?;
-    let expected = Image::load_png(file.snapshot(".png"))
+    let expected = Image::load_png(stage_snapshot(file, stage))
         .map_err(|e| fail(&case, "a snapshot", no_snapshot(file, e), ""))?;
-    let (yours, _) = render_scene(&scene, None, &scene_settings(&scene), scene_sampling(&scene))
-        .map_err(|e| fail(&case, "an image", e, ""))?;
+    let yours = stages::render(stage, &scene).map_err(|e| fail(&case, "an image", e, ""))?;
     let c = compare(&expected, &yours, CHANNEL_THRESHOLD).map_err(|e| {
         fail(&case, format!("{}×{}", expected.width, expected.height), e, "one pixel per (x, y), row by row")
     })?;
@@ -375,28 +385,33 @@ fn check_image(file: &SceneFile, dir: &Path) -> CheckResult {
         return Ok(measured);
     }
     let (x, y) = c.first_over.unwrap_or_default();
-    // The ray tree of the first differing pixel, for the report.
-    if let Ok((color, tree)) = crate::tracer::pixel_tree(&scene, (x, y), &scene_settings(&scene)) {
-        let text = format!(
-            "your ray tree of pixel ({x}, {y}), the first that differs: colour ({:.3}, {:.3}, {:.3})\n{tree}",
-            color.x, color.y, color.z
-        );
+    // The ray tree of the first differing pixel, for the report (stages that trace a ray tree).
+    if let Some(text) = stages::pixel_tree(stage, &scene, (x, y)) {
+        let text = format!("your ray tree of pixel ({x}, {y}), the first that differs: {text}");
         let _ = std::fs::write(&tree_file, text);
     }
-    let cause = match geometry_difference(file, &scene) {
-        Ok(Some(geometry)) => format!(
-            "the geometry differs already ({}: expected {}, got {}): fix {} first",
-            geometry.case,
-            geometry.expected,
-            geometry.got,
-            if has_geometry_check(&file.lecture) {
-                format!("{}/geometry/{}", file.lecture, file.name())
-            } else {
-                "the intersections and 02's object_id_image, depth_image and normal_image".to_owned()
-            }
-        ),
-        Ok(None) => format!("your geometry matches; {}", shading_diagnosis(&scene, &expected, &yours)),
-        Err(e) => e,
+    let cause = if stage == "01" {
+        camera_diagnosis(&yours)
+    } else {
+        match geometry_difference(file, &scene) {
+            Ok(Some(geometry)) => format!(
+                "the geometry differs already ({}: expected {}, got {}; {}): fix {} first",
+                geometry.case,
+                geometry.expected,
+                geometry.got,
+                geometry.cause,
+                if has_geometry_check(&file.lecture) {
+                    format!("{}/geometry/{}", file.lecture, file.name())
+                } else {
+                    "the intersections of lectures 02–04 (02 closest_hit, 03 and 04's shapes)".to_owned()
+                }
+            ),
+            Ok(None) => format!(
+                "your geometry matches; {}",
+                shading_diagnosis(stage, file, &scene, &expected, &yours)
+            ),
+            Err(e) => e,
+        }
     };
     let show = |c: Color| format!("({:.3}, {:.3}, {:.3})", c.x, c.y, c.z);
     Err(Failure {
@@ -408,20 +423,48 @@ fn check_image(file: &SceneFile, dir: &Path) -> CheckResult {
     })
 }
 
-/// Where the differing pixels of a shaded image lie, and what that points to.
-#[cfg(feature = "l10")]
-fn shading_diagnosis(scene: &Scene, expected: &Image, yours: &Image) -> String {
-    let Ok([id, depth, normal]) = geometry_images_reference(scene) else {
+/// Why stage 01's picture (the rays' directions as colours) differs.
+fn camera_diagnosis(yours: &Image) -> String {
+    if yours.pixels.iter().any(|c| !c.is_finite()) {
+        return "some rays have a NaN or infinite direction or origin: look_at with a degenerate up, or a \
+                division by zero in screen_coords"
+            .into();
+    }
+    "the rays point elsewhere than the reference's: the colour is the ray's world direction (red +x, green \
+     +y, blue +z) with bands every 15°. Check screen_coords (pixel centres, y down), fovy as the full \
+     vertical angle (tan(fovy/2)), the aspect on x, look_at's columns (u, v, w with w = (eye − at)/|…|), \
+     and for orthographic cameras the origins (sx·aspect·h/2, sy·h/2)"
+        .into()
+}
+
+/// Where the differing pixels of a shaded image lie, and what that points to
+/// at stage `stage` (the reference's geometry from the snapshots).
+fn shading_diagnosis(
+    stage: &str,
+    file: &SceneFile,
+    scene: &Scene,
+    expected: &Image,
+    yours: &Image,
+) -> String {
+    let (Ok(id), Ok(depth), Ok(normal)) = (
+        Image::load_png(file.snapshot(".id.png")),
+        Image::load_exr(file.snapshot(".depth.exr")),
+        Image::load_exr(file.snapshot(".normal.exr")),
+    ) else {
         return "the shading differs".into();
     };
-    let camera = l01_transforms::Camera::from_scene(&scene.camera, scene.width, scene.height).ok();
     let (w, h) = (expected.width, expected.height);
+    if (id.width, id.height) != (w, h) {
+        return "the shading differs".into();
+    }
+    let camera = camera_rays(scene);
     let mut over = vec![false; (w * h) as usize];
     for (i, (e, g)) in expected.pixels.iter().zip(&yours.pixels).enumerate() {
         let (e, g) = (raylab::color::to_srgb8(*e), raylab::color::to_srgb8(*g));
         over[i] = (0..3).any(|c| e[c].abs_diff(g[c]) > CHANNEL_THRESHOLD) || !yours.pixels[i].is_finite();
     }
     let (mut total, mut glossy, mut facing_away, mut isolated, mut darker, mut nan) = (0, 0, 0, 0, 0, 0);
+    let mut negative = 0;
     for y in 0..h {
         for x in 0..w {
             let i = (y * w + x) as usize;
@@ -430,6 +473,7 @@ fn shading_diagnosis(scene: &Scene, expected: &Image, yours: &Image) -> String {
             }
             total += 1;
             nan += usize::from(!yours.pixels[i].is_finite());
+            negative += usize::from(yours.pixels[i].min_element() < 0.0);
             darker += usize::from(luminance(yours.pixels[i]) < luminance(expected.pixels[i]));
             let neighbours = [(x.wrapping_sub(1), y), (x + 1, y), (x, y.wrapping_sub(1)), (x, y + 1)];
             isolated += usize::from(
@@ -444,8 +488,7 @@ fn shading_diagnosis(scene: &Scene, expected: &Image, yours: &Image) -> String {
                     material.reflective.max_element() > 0.0 || material.transparent.max_element() > 0.0;
                 glossy += usize::from(reflective);
             }
-            if let (Some(camera), Some(_)) = (&camera, object) {
-                let ray = camera.pixel_ray(x, y, w, h);
+            if let (Some(ray), Some(_)) = (camera.as_ref().map(|c| c(x, y)), object) {
                 let point = ray.origin + ray.dir.normalize() * depth.get(x, y).x;
                 let n = normal.get(x, y);
                 let lit = scene
@@ -457,19 +500,35 @@ fn shading_diagnosis(scene: &Scene, expected: &Image, yours: &Image) -> String {
         }
     }
     let share = |n: usize| n as f64 / total.max(1) as f64;
+    let headlight = matches!(stage, "02" | "03" | "04" | "09");
     if nan > 0 {
         format!(
             "{nan} of your pixels are NaN or infinite: a division by zero or the sqrt of a negative number"
         )
+    } else if negative > 0 {
+        format!(
+            "{negative} of your pixels have a negative colour: light from behind a surface subtracts light. \
+             Clamp with max(N·L, 0) in the diffuse term (and the specular terms' cosines)"
+        )
+    } else if headlight {
+        "the headlight shading k_d·(½ + ½ N·V) differs where your ids and depths match: the normals differ \
+         (unit, facing the ray), or the hit's material index"
+            .into()
     } else if share(facing_away) >= 0.5 {
         "the shading differs where the surface faces away from every light (N·L ≤ 0): clamp with max(N·L, 0) \
          in the diffuse and the specular terms"
             .into()
-    } else if share(glossy) >= 0.5 {
-        "the differences are on reflective or transparent objects: check the mirror and refracted rays \
-         (07 mirror_direction, refract, schlick; 08 trace and its weights)"
-            .into()
-    } else if share(isolated) >= 0.3 && share(darker) >= 0.7 {
+    } else if share(glossy) >= 0.5 && stage >= "07" {
+        if stage == "07" {
+            "the differences are on reflective or transparent objects, which show the sky in your mirror and \
+             refracted directions: check 07 mirror_direction, interface and refract"
+                .into()
+        } else {
+            "the differences are on reflective or transparent objects: check the mirror and refracted rays \
+             (07 mirror_direction, refract, fresnel_dielectric; 08 trace and its weights)"
+                .into()
+        }
+    } else if share(isolated) >= 0.3 && share(darker) >= 0.7 && stage >= "06" {
         "speckled dark pixels on lit surfaces: shadow acne. Offset the shadow ray's origin off the surface \
          (06 offset_origin) and ignore blockers beyond the light"
             .into()
@@ -478,9 +537,15 @@ fn shading_diagnosis(scene: &Scene, expected: &Image, yours: &Image) -> String {
          intensity, or a colour multiplied twice"
             .into()
     } else if share(darker) <= 0.2 {
-        "your image is brighter where it differs: a missing shadow, light from behind the surface (max(N·L, 0)), \
-         or the sRGB encoding applied twice"
-            .into()
+        if stage == "05" {
+            "your image is brighter where it differs: light from behind the surface (max(N·L, 0)), a \
+             missing falloff, or a colour added twice"
+                .into()
+        } else {
+            "your image is brighter where it differs: a missing shadow, light from behind the surface \
+             (max(N·L, 0)), or the sRGB encoding applied twice"
+                .into()
+        }
     } else {
         "the shading differs: compare expected.png and yours.png, and print the ray tree of a differing pixel \
          (grader render SCENE --tree X,Y)"
@@ -488,13 +553,24 @@ fn shading_diagnosis(scene: &Scene, expected: &Image, yours: &Image) -> String {
     }
 }
 
-#[cfg(feature = "l10")]
+/// The primary ray of each pixel of `scene`, from the student's camera when lecture 01 is built.
+#[allow(unused_variables)]
+fn camera_rays(scene: &Scene) -> Option<impl Fn(u32, u32) -> raylab::Ray> {
+    #[cfg(feature = "l01")]
+    {
+        let camera = l01_transforms::Camera::from_scene(&scene.camera, scene.width, scene.height).ok()?;
+        let (w, h) = (scene.width, scene.height);
+        Some(move |x, y| camera.pixel_ray(x, y, w, h))
+    }
+    #[cfg(not(feature = "l01"))]
+    None::<fn(u32, u32) -> raylab::Ray>
+}
+
 fn luminance(c: Color) -> Float {
     0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z
 }
 
 /// The unit direction from `point` toward the light (any point of an area light's centre).
-#[cfg(feature = "l10")]
 fn light_direction(light: &raylab::scene::Light, point: Vec3) -> Option<Vec3> {
     use raylab::scene::LightKind;
     match light.kind {
@@ -509,21 +585,17 @@ fn light_direction(light: &raylab::scene::Light, point: Vec3) -> Option<Vec3> {
     }
 }
 
-/// The reference's geometry images of `scene` (from the snapshots' own code path: the complete tracer's
-/// intersector), to locate differences of the shaded image.
-#[cfg(feature = "l10")]
-fn geometry_images_reference(scene: &Scene) -> Result<[Image; 3], String> {
-    use crate::tracer::{Aov, render_scene, scene_sampling, scene_settings};
-    let settings = scene_settings(scene);
-    let one = |aov| render_scene(scene, Some(aov), &settings, scene_sampling(scene)).map(|(image, _)| image);
-    Ok([one(Aov::Id)?, one(Aov::Depth)?, one(Aov::Normal)?])
-}
-
 /// The index of the object pixel (x, y) of an id image shows.
-#[cfg(feature = "l10")]
+#[allow(unused_variables)]
 fn object_at(id: &Image, x: u32, y: u32, scene: &Scene) -> Option<usize> {
-    let pixel = raylab::color::to_srgb8(id.get(x, y));
-    (0..scene.objects.len()).find(|&i| raylab::color::to_srgb8(l02_ray_casting::id_color(Some(i))) == pixel)
+    #[cfg(feature = "l02")]
+    {
+        let pixel = raylab::color::to_srgb8(id.get(x, y));
+        return (0..scene.objects.len())
+            .find(|&i| raylab::color::to_srgb8(l02_ray_casting::id_color(Some(i))) == pixel);
+    }
+    #[allow(unreachable_code)]
+    None
 }
 
 /// Writes expected.png, yours.png and diff.png (FLIP's error map, magma
@@ -570,7 +642,8 @@ pub fn write_images(dir: &Path, expected: &Image, yours: &Image) -> Result<Image
 }
 
 /// `grader bless`: writes every scene's snapshots (or one lecture's) from
-/// the current code.
+/// the current code: `S.png` by the scene's stage, `S.final.png` by the
+/// complete tracer (scenes of lectures 01–09), and the geometry images.
 #[cfg(feature = "l10")]
 pub fn bless(only: Option<&str>) -> Result<(), String> {
     use crate::tracer::{Aov, render_scene, scene_sampling, scene_settings};
@@ -581,7 +654,10 @@ pub fn bless(only: Option<&str>) -> Result<(), String> {
         let error = |e: raylab::ImageError| e.to_string();
         let render =
             |aov| render_scene(&scene, aov, &settings, scene_sampling(&scene)).map(|(image, _)| image);
-        render(None)?.save_png(file.snapshot(".png")).map_err(error)?;
+        stages::render(&file.lecture, &scene)?.save_png(file.snapshot(".png")).map_err(error)?;
+        if file.lecture != FINAL_STAGE {
+            render(None)?.save_png(file.snapshot(".final.png")).map_err(error)?;
+        }
         render(Some(Aov::Id))?.save_png(file.snapshot(".id.png")).map_err(error)?;
         render(Some(Aov::Depth))?.save_exr(file.snapshot(".depth.exr")).map_err(error)?;
         render(Some(Aov::Normal))?.save_exr(file.snapshot(".normal.exr")).map_err(error)?;

@@ -33,6 +33,7 @@ mod images;
 mod lectures;
 #[cfg(feature = "l03")]
 mod scene_objects;
+mod stages;
 #[cfg(feature = "l10")]
 mod tools;
 #[cfg(feature = "l10")]
@@ -138,7 +139,7 @@ fn run(id: &str, verdict: &Path, out: &Path) -> Result<(), String> {
         let _ = std::fs::write(&file, json.to_string());
         default_hook(info);
     }));
-    let result = if id.split('/').nth(1).is_some_and(|kind| kind == "image" || kind == "geometry") {
+    let result = if id.split('/').nth(1).is_some_and(|kind| matches!(kind, "image" | "geometry" | "final")) {
         images::run(id, out)
     } else {
         lectures::run(id)

@@ -4,7 +4,6 @@
 //! scene has enough primitives to need one, and lecture 10's textures.
 
 use l01_transforms::Camera;
-use l06_shadows::ShadowMode;
 use l08_ray_tree::{RayTree, TraceSettings, World, trace_recorded};
 use l10_textures_sampling::{Filter, Pattern, render_supersampled, surface_color};
 use raylab::scene::Material;
@@ -22,22 +21,7 @@ pub enum Aov {
     Normal,
 }
 
-/// The tracer's settings for `scene`: what its `[render]` table says, and
-/// [`TraceSettings::default`] for what it does not (6.837 files say nothing).
-pub fn scene_settings(scene: &Scene) -> TraceSettings {
-    let (own, default) = (scene.render, TraceSettings::default());
-    TraceSettings {
-        max_depth: own.max_depth.unwrap_or(default.max_depth),
-        min_weight: own.min_weight.unwrap_or(default.min_weight),
-        shadow_mode: match own.transparent_shadows {
-            Some(true) => ShadowMode::Transmissive,
-            Some(false) => ShadowMode::Opaque,
-            None => default.shadow_mode,
-        },
-        area_samples: own.area_samples.unwrap_or(default.area_samples),
-        ..default
-    }
-}
+pub use crate::stages::scene_settings;
 
 /// How many eye rays each pixel gets, where, and how they are weighted
 /// (lecture 10). One ray is the pixel centre, as lecture 08 renders.

@@ -94,8 +94,9 @@ mod tests {
     use std::collections::HashSet;
 
     #[test]
-    fn ids_are_unique_and_every_need_names_an_exercise_of_an_earlier_or_same_lecture() {
-        let infos = infos();
+    fn ids_are_unique_and_every_need_names_an_exercise_of_an_earlier_or_same_lecture_images_included() {
+        let mut infos = infos();
+        infos.extend(crate::images::infos());
         let mut seen = HashSet::new();
         for info in &infos {
             assert!(seen.insert(info.id.clone()), "{} is declared twice", info.id);
