@@ -1,8 +1,11 @@
 #!/bin/sh
 # Copies the reference images the book shows into book/src/figures/.
-# Source: the lectures' snapshots, lectures/NN-name/snapshots/SCENE.png, which
-# `cargo run -p grader -- bless` regenerates from the reference solutions.
-# A figure is named NN-SCENE.png (NN = the lecture = the chapter). Depth and
+# Source: the lectures' snapshots, which `cargo run -p grader -- bless`
+# regenerates from the reference solutions: lectures/NN-name/snapshots/
+# SCENE.final.png (the complete tracer) becomes the figure NN-SCENE.png (NN =
+# the lecture = the chapter; lecture 10's own SCENE.png is its final picture);
+# SCENE.png (lecture NN's stage: what a student sees once lecture NN is done)
+# becomes NN-SCENE.stage.png; other snapshots (SCENE.id) keep their name. Depth and
 # normal figures (NN-SCENE.depth.png, .normal.png) are rendered by the
 # reference with `grader render --aov` (it builds the workspace if needed).
 # Run from anywhere: sh book/figures.sh
@@ -23,27 +26,38 @@ case "${1:-}" in
 esac
 problems=0
 listed=""
-copy() { # lecture-folder scene...
+put() { # lecture-folder snapshot-file figure-file
+    src="$root/lectures/$1/snapshots/$2"
+    dst="$out/$3"
+    listed="$listed $3"
+    if ! $check; then
+        mkdir -p "$out"
+        cp "$src" "$dst"
+    elif [ ! -f "$src" ]; then
+        echo "figures: no snapshot lectures/$1/snapshots/$2 for book/src/figures/$3"
+        problems=$((problems + 1))
+    elif [ ! -f "$dst" ]; then
+        echo "figures: missing book/src/figures/$3 (copy of lectures/$1/snapshots/$2)"
+        problems=$((problems + 1))
+    elif ! cmp -s "$src" "$dst"; then
+        echo "figures: stale book/src/figures/$3 (differs from lectures/$1/snapshots/$2)"
+        problems=$((problems + 1))
+    fi
+}
+copy() { # lecture-folder snapshot...: SNAPSHOT.png as NN-SNAPSHOT.png
     lecture=$1; shift
     n=$(echo "$lecture" | cut -c1-2)
-    for scene in "$@"; do
-        src="$root/lectures/$lecture/snapshots/$scene.png"
-        dst="$out/$n-$scene.png"
-        listed="$listed $n-$scene.png"
-        if ! $check; then
-            mkdir -p "$out"
-            cp "$src" "$dst"
-        elif [ ! -f "$src" ]; then
-            echo "figures: no snapshot lectures/$lecture/snapshots/$scene.png for book/src/figures/$n-$scene.png"
-            problems=$((problems + 1))
-        elif [ ! -f "$dst" ]; then
-            echo "figures: missing book/src/figures/$n-$scene.png (copy of lectures/$lecture/snapshots/$scene.png)"
-            problems=$((problems + 1))
-        elif ! cmp -s "$src" "$dst"; then
-            echo "figures: stale book/src/figures/$n-$scene.png (differs from lectures/$lecture/snapshots/$scene.png)"
-            problems=$((problems + 1))
-        fi
-    done
+    for scene in "$@"; do put "$lecture" "$scene.png" "$n-$scene.png"; done
+}
+final() { # lecture-folder scene...: the complete tracer's SCENE.final.png as NN-SCENE.png
+    lecture=$1; shift
+    n=$(echo "$lecture" | cut -c1-2)
+    for scene in "$@"; do put "$lecture" "$scene.final.png" "$n-$scene.png"; done
+}
+stage() { # lecture-folder scene...: the lecture's stage, SCENE.png, as NN-SCENE.stage.png
+    lecture=$1; shift
+    n=$(echo "$lecture" | cut -c1-2)
+    for scene in "$@"; do put "$lecture" "$scene.png" "$n-$scene.stage.png"; done
 }
 # render lecture-folder scene aov: the scene's depth or normal image as a
 # viewable PNG (`grader render --aov depth|normal -o X.png`), rendered afresh
@@ -67,17 +81,27 @@ render() {
     fi
     rm -f "$tmp"
 }
-copy 01-transforms perspective orthographic rolled
-copy 02-ray-casting spheres-on-plane spheres-on-plane.id overlapping-depths inside-sphere
+final 01-transforms perspective orthographic rolled
+stage 01-transforms perspective orthographic rolled
+final 02-ray-casting spheres-on-plane overlapping-depths inside-sphere
+copy 02-ray-casting spheres-on-plane.id
+stage 02-ray-casting spheres-on-plane overlapping-depths inside-sphere orthographic
 render 02-ray-casting spheres-on-plane depth
 render 02-ray-casting spheres-on-plane normal
-copy 03-polygons-triangles boxes polygons triangles meshes
-copy 04-quadrics-transforms cylinders-cones ellipsoid extreme-scale transformed-mesh
-copy 05-shading phong-exponents blinn-vs-phong coloured-lights attenuation spot
-copy 06-shadows sphere-shadow coloured-shadows far-from-origin soft-shadows-1 soft-shadows-4 soft-shadows-16 soft-shadows-64
-copy 07-reflection-refraction mirror-floor reflective-sphere glass-spheres tir-slab
-copy 08-ray-tree whitted whitted-no-shadows facing-mirrors
-copy 09-acceleration many-spheres torus-65k
+final 03-polygons-triangles boxes polygons triangles meshes
+stage 03-polygons-triangles boxes polygons triangles meshes
+final 04-quadrics-transforms cylinders-cones ellipsoid extreme-scale transformed-mesh
+stage 04-quadrics-transforms cylinders-cones ellipsoid extreme-scale transformed-mesh
+final 05-shading phong-exponents blinn-vs-phong coloured-lights attenuation spot
+stage 05-shading phong-exponents blinn-vs-phong coloured-lights attenuation spot
+final 06-shadows sphere-shadow coloured-shadows far-from-origin soft-shadows-1 soft-shadows-4 soft-shadows-16 soft-shadows-64
+stage 06-shadows sphere-shadow coloured-shadows glass-shadow-filtered soft-shadows-16
+final 07-reflection-refraction mirror-floor reflective-sphere glass-spheres tir-slab
+stage 07-reflection-refraction mirror-floor reflective-sphere glass-spheres tir-slab
+final 08-ray-tree whitted whitted-no-shadows facing-mirrors
+stage 08-ray-tree whitted whitted-no-shadows facing-mirrors
+final 09-acceleration many-spheres torus-65k
+stage 09-acceleration many-spheres torus-65k
 copy 10-textures-sampling checkerboard solid-checker checker-aliasing-1spp checker-aliasing-16spp
 if ! $check; then
     echo "figures: $(ls "$out" | wc -l) files in $out"

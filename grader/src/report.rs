@@ -96,20 +96,25 @@ fn row(body: &mut String, ws: &Workspace, v: &Verdict, out: &Path) {
         v.points,
         v.info.points
     );
-    if v.info.exercise == "image" {
+    if matches!(v.info.exercise.as_str(), "image" | "final") {
         images_row(body, ws, v, out);
     }
 }
 
 /// The three images of a scene, when the check wrote them.
 fn images_row(body: &mut String, ws: &Workspace, v: &Verdict, out: &Path) {
-    let scene_dir = out.join(&v.info.lecture).join(v.info.id.rsplit('/').next().unwrap_or_default());
+    let name = v.info.id.rsplit('/').next().unwrap_or_default();
+    // `NN/image/S` writes into NN/S and draws lecture NN's S; `10/final/MM-S` writes into
+    // 10/final-MM-S and draws lecture MM's S.
+    let (dir_name, scene_lecture, scene_name) = match name.split_once('-') {
+        Some((lecture, scene)) if v.info.exercise == "final" => (format!("final-{name}"), lecture, scene),
+        _ => (name.to_owned(), v.info.lecture.as_str(), name),
+    };
+    let scene_dir = out.join(&v.info.lecture).join(&dir_name);
     if !scene_dir.join("expected.png").is_file() {
         return;
     }
-    let relative = |name: &str| {
-        format!("{}/{}/{name}", v.info.lecture, v.info.id.rsplit('/').next().unwrap_or_default())
-    };
+    let relative = |file: &str| format!("{}/{dir_name}/{file}", v.info.lecture);
     let flip = v.failure.as_ref().and_then(|f| f.images.as_ref()).map_or_else(
         || {
             v.summary
@@ -121,8 +126,8 @@ fn images_row(body: &mut String, ws: &Workspace, v: &Verdict, out: &Path) {
         },
         |i| format!("{:.4} ({:.2} % of pixels over 0.25)", i.flip_mean, 100.0 * i.flip_fraction_over),
     );
-    let folder = ws.lecture(&v.info.lecture).map_or_else(String::new, |l| l.folder.clone());
-    let scene = format!("lectures/{folder}/scenes/{}.toml", v.info.id.rsplit('/').next().unwrap_or_default());
+    let folder = ws.lecture(scene_lecture).map_or_else(String::new, |l| l.folder.clone());
+    let scene = format!("lectures/{folder}/scenes/{scene_name}.toml");
     let tree = std::fs::read_to_string(scene_dir.join("tree.txt")).unwrap_or_default();
     let _ = writeln!(
         body,

@@ -1,7 +1,7 @@
 //! `grader watch`: re-grades a lecture whenever one of its source files
 //! changes. It builds only that lecture and those it uses, and runs only its
-//! checks, so a verdict comes back in seconds; the shaded image checks, which
-//! need every lecture, wait for a full `cargo run -p grader`.
+//! checks, its image checks included (each lecture's stage draws with that
+//! lecture and earlier ones), so a verdict and a picture come back in seconds.
 
 use std::collections::BTreeMap;
 use std::path::PathBuf;
@@ -57,7 +57,14 @@ pub fn watch(ws: &Workspace, mut options: GradeOptions) -> Result<bool, String> 
         options.selection = Selection::parse(&[&lecture])?;
         println!("\n=== lecture {lecture} changed: grading it");
         match grade(ws, &options) {
-            Ok(g) => print!("{}", table(ws, &g)),
+            Ok(g) => {
+                print!("{}", table(ws, &g));
+                // The lecture's pictures (expected, yours, difference) in the report.
+                match crate::report::write(ws, &g, &crate::grade::out_dir(ws, &options)) {
+                    Ok(path) => println!("report: {}", path.display()),
+                    Err(e) => eprintln!("the report could not be written: {e}"),
+                }
+            }
             Err(e) => eprintln!("error: {e}"),
         }
     }
