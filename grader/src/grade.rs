@@ -89,9 +89,19 @@ impl Grade {
     }
 }
 
-/// The folder the grader writes into: `target/grader` of the workspace.
+/// The folder the grader writes into: `grader/` in the target directory
+/// cargo builds into (the option, else `CARGO_TARGET_DIR`, else the
+/// workspace's `target/`).
 pub fn out_dir(ws: &Workspace, options: &GradeOptions) -> PathBuf {
-    options.target_dir.clone().unwrap_or_else(|| ws.root.join("target")).join("grader")
+    let from_env = std::env::var_os("CARGO_TARGET_DIR").filter(|d| !d.is_empty()).map(PathBuf::from);
+    let target = options.target_dir.clone().or(from_env).unwrap_or_else(|| ws.root.join("target"));
+    // A relative CARGO_TARGET_DIR is relative to where cargo runs: the current folder.
+    let target = if target.is_relative() {
+        std::env::current_dir().map(|d| d.join(&target)).unwrap_or(target)
+    } else {
+        target
+    };
+    target.join("grader")
 }
 
 pub fn grade(ws: &Workspace, options: &GradeOptions) -> Result<Grade, String> {

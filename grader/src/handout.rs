@@ -6,14 +6,21 @@
 //! - `// INSTRUCTOR BEGIN … // INSTRUCTOR END` regions (in Rust and TOML
 //!   files) are removed, and files whose first line says `INSTRUCTOR ONLY`
 //!   are left out, with the folders of instructor material: `tests/`,
-//!   `benches/`, `scripts/`, `.ci/`, `book/doctests/`, the checks' own tests;
+//!   `benches/`, `scripts/`, `.ci/`, `book/doctests/`, the checks' own tests,
+//!   the book's maintenance scripts and `ARCHITECTURE.md`;
+//! - `README.md` is the student's (`grader/STUDENT-README.md`), not the
+//!   instructors';
 //! - workspace members that are left out leave the members list;
 //! - each lecture's `lib.rs` gets an `allow` for the warnings the stubs
 //!   cause (unused parameters and imports), to be deleted when done.
 
 use std::path::{Path, PathBuf};
 
-/// Folders (relative to the root) that stay out of the handout.
+/// Folders and files (relative to the root) that stay out of the handout:
+/// build output, the instructors' tests, benchmarks, scripts and CI, the
+/// book's maintenance scripts (a student builds the book with `mdbook build
+/// book` alone), and the instructors' documents (`ARCHITECTURE.md`, the
+/// template of the student's README, which becomes its `README.md`).
 const LEFT_OUT: &[&str] = &[
     "target",
     ".git",
@@ -23,8 +30,21 @@ const LEFT_OUT: &[&str] = &[
     ".ci",
     "book/doctests",
     "book/book",
+    "book/README.md",
+    "book/ci.sh",
+    "book/browsercheck.py",
+    "book/linkcheck.py",
+    "book/figures.sh",
+    "book/katex.sh",
+    "book/regenerate.sh",
+    "book/tradeoffs.sh",
     "grader/checks/tests",
+    "ARCHITECTURE.md",
+    STUDENT_README,
 ];
+
+/// The student's `README.md`, kept in the instructors' tree under this name.
+const STUDENT_README: &str = "grader/STUDENT-README.md";
 
 /// One exercise region found in a source file.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -85,6 +105,10 @@ pub fn write(root: &Path, dir: &Path, force: bool) -> Result<(), String> {
         }
         if relative_str == "Cargo.toml" {
             text = drop_missing_members(&text, &root);
+        }
+        if relative_str == "README.md" {
+            let template = root.join(STUDENT_README);
+            text = std::fs::read_to_string(&template).map_err(|e| format!("{}: {e}", template.display()))?;
         }
         std::fs::write(&target, text).map_err(|e| format!("{}: {e}", target.display()))?;
     }

@@ -12,6 +12,8 @@ mod compile;
 mod grade;
 mod handout;
 mod output;
+mod platform;
+mod progress;
 mod report;
 mod run;
 mod submission;
@@ -207,7 +209,7 @@ fn grade_command(
     let report = report::write(ws, &grade, &out);
     let text = match args.format {
         Format::Table => output::table(ws, &grade),
-        Format::Json => pretty_json(&output::json(&grade))?,
+        Format::Json => pretty_json(&output::json(ws, &grade))?,
         Format::Gradescope => pretty_json(&output::gradescope(&grade))?,
     };
     match &args.output {

@@ -87,11 +87,12 @@ pub fn table(ws: &Workspace, grade: &Grade) -> String {
         count(Status::TimedOut),
         grade.seconds
     );
+    text.push_str(&crate::progress::text(&crate::progress::progress(ws, grade)));
     text
 }
 
-/// The grade as JSON: totals, compile errors and every verdict.
-pub fn json(grade: &Grade) -> Value {
+/// The grade as JSON: totals, compile errors, progress (the next exercise) and every verdict.
+pub fn json(ws: &Workspace, grade: &Grade) -> Value {
     let (got, max) = grade.points();
     let errors: Vec<Value> = grade
         .compile_errors
@@ -103,6 +104,7 @@ pub fn json(grade: &Grade) -> Value {
         "max_score": max,
         "all_passed": grade.all_passed(),
         "compile_errors": errors,
+        "progress": crate::progress::progress(ws, grade),
         "checks": grade.verdicts,
     })
 }

@@ -29,6 +29,9 @@ fn html(ws: &Workspace, grade: &Grade, out: &Path) -> String {
         grade.verdicts.len(),
         grade.seconds
     );
+    // Where the student stands and the one file to open next.
+    let progress = crate::progress::progress(ws, grade);
+    let _ = writeln!(body, "<pre class=\"next\">{}</pre>", escape(crate::progress::text(&progress).trim()));
     for (lecture, error) in &grade.compile_errors {
         let _ = writeln!(
             body,
@@ -151,6 +154,7 @@ fn escape(text: &str) -> String {
 
 const STYLE: &str = "
 body { font-family: system-ui, sans-serif; margin: 2em; color: #222; }
+pre.next { background: #eef5ff; border-left: 4px solid #36c; padding: 0.6em 1em; white-space: pre-wrap; }
 h2 .pts { font-weight: normal; color: #666; }
 table { border-collapse: collapse; width: 100%; margin-bottom: 2em; }
 td, th { border-bottom: 1px solid #ddd; padding: 0.3em 0.6em; text-align: left; vertical-align: top; }

@@ -208,13 +208,7 @@ pub fn gradescope_bundle(root: &Path, dir: &Path, force: bool) -> Result<(), Str
 
 fn write_script(path: &Path, text: &str) -> Result<(), String> {
     std::fs::write(path, text).map_err(|e| format!("{}: {e}", path.display()))?;
-    #[cfg(unix)]
-    {
-        use std::os::unix::fs::PermissionsExt;
-        std::fs::set_permissions(path, std::fs::Permissions::from_mode(0o755))
-            .map_err(|e| format!("{}: {e}", path.display()))?;
-    }
-    Ok(())
+    crate::platform::make_executable(path)
 }
 
 /// Gradescope runs this once, as root, to build the autograder image.

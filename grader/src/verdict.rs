@@ -251,27 +251,10 @@ fn abnormal_end(ran: &Ran) -> String {
             Some(code) => {
                 format!("the process exited with code {code} before the check finished (std::process::exit?)")
             }
-            None => format!("the process was killed ({})", signal_name(s)),
+            None => format!("the process was killed ({})", crate::platform::signal_name(s)),
         },
         None => "the process did not finish".into(),
     }
-}
-
-#[cfg(unix)]
-fn signal_name(status: std::process::ExitStatus) -> String {
-    use std::os::unix::process::ExitStatusExt;
-    match status.signal() {
-        Some(6) => "SIGABRT: an abort, e.g. a panic while panicking".into(),
-        Some(9) => "SIGKILL: out of memory?".into(),
-        Some(11) => "SIGSEGV".into(),
-        Some(n) => format!("signal {n}"),
-        None => "no signal".into(),
-    }
-}
-
-#[cfg(not(unix))]
-fn signal_name(status: std::process::ExitStatus) -> String {
-    format!("{status}")
 }
 
 /// "02 hit_sphere_geometric" for `02/hit_sphere_geometric`.

@@ -154,6 +154,18 @@ fn the_handout_compiles_and_scores_zero_without_a_crash() {
     let out =
         Command::new(grader_binary()).args(["handout", "--force", dir.to_str().unwrap()]).output().unwrap();
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    // Its README is the student's: what to edit and where to start, no instructor material.
+    let readme = std::fs::read_to_string(dir.join("README.md")).unwrap();
+    assert!(readme.contains("## What to edit") && readme.contains("cargo run -p grader"), "{readme}");
+    for instructor in ["SOLUTION", "instructor", "bless", "gradescope", "handout", "--submission"] {
+        assert!(
+            !readme.to_lowercase().contains(&instructor.to_lowercase()),
+            "the handout's README says {instructor}"
+        );
+    }
+    for left_out in ["ARCHITECTURE.md", "grader/STUDENT-README.md", "book/ci.sh", "tests", "benches"] {
+        assert!(!dir.join(left_out).exists(), "the handout has {left_out}");
+    }
     let target = scratch().join("handout-target");
     // It compiles, tests and all, without a warning from the stubs (checked, not built: its
     // grader below builds what it runs).
@@ -178,6 +190,14 @@ fn the_handout_compiles_and_scores_zero_without_a_crash() {
             check["summary"]
         );
     }
+    // The grade names the one file to open first: lecture 01's first exercise.
+    let next = &grade["progress"]["next"];
+    assert_eq!(next["exercise"], "01/translate", "{next}");
+    assert!(
+        next["location"].as_str().unwrap().starts_with("lectures/01-transforms/src/transforms.rs:"),
+        "{next}"
+    );
+    assert_eq!(grade["progress"]["passed"], 0);
     // Every lecture has exercises marked not started, so the table tells a student where to begin.
     for lecture in ["01", "02", "03", "04", "05", "06", "07", "08", "09", "10"] {
         assert!(
@@ -449,6 +469,18 @@ fn each_week_grades_its_lectures_images_included() {
             }
         }
         assert!(images >= 3, "{name}: only {images} image checks graded\n{stderr}");
+        // Where to go next: the first exercise of the next lecture (or its broken file).
+        let next = &grade["progress"]["next"];
+        match lectures.get(week) {
+            Some(following) => {
+                let location = next["location"].as_str().unwrap_or_default();
+                assert!(
+                    location.starts_with(&format!("lectures/{following}/src/")),
+                    "{name}: next is {next}"
+                );
+            }
+            None => assert!(next.is_null(), "{name}: next is {next}"),
+        }
         println!(
             "{name}: {} checks, {images} image checks of lectures ≤ {week} passed",
             checks(&grade).len()

@@ -31,6 +31,7 @@ mod check;
 mod exact;
 mod images;
 mod lectures;
+mod platform;
 #[cfg(feature = "l03")]
 mod scene_objects;
 mod stages;
@@ -123,7 +124,7 @@ const MEMORY_LIMIT: u64 = 4 << 30;
 /// overwrites it when the check returns.
 fn run(id: &str, verdict: &Path, out: &Path) -> Result<(), String> {
     // Best effort: where limits cannot be set, the grader's time limit still holds.
-    let _ = rlimit::setrlimit(rlimit::Resource::AS, MEMORY_LIMIT, MEMORY_LIMIT);
+    platform::limit_memory(MEMORY_LIMIT);
     let file = verdict.to_owned();
     let default_hook = std::panic::take_hook();
     std::panic::set_hook(Box::new(move |info| {

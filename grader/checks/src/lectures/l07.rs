@@ -456,13 +456,19 @@ mod code {
             ));
         };
         close(
-            case,
+            format!("{case}: cos θ_t = −t·n"),
             -t.y,
             expected_cos_t as Float,
             0.02 * expected_cos_t as Float,
             "cos θ_t = √(1 − η²(1 − cos²θ_i)), the normal part of t is −cos θ_t·n",
         )?;
-        close(case, t.length(), 1.0, 4.0 * EPS, "t = η·i + (η·cos θ_i − cos θ_t)·n is unit")?;
+        close(
+            format!("{case}: the length |t|"),
+            t.length(),
+            1.0,
+            4.0 * EPS,
+            "t = η·i + (η·cos θ_i − cos θ_t)·n is unit",
+        )?;
         // 0.001° above: sin²θ_t ≈ 1 + 3.9·10⁻⁵, total internal reflection; also at grazing.
         for (case, i) in [
             ("glass to air at 0.001° above the critical angle", incoming(critical + 0.001)),

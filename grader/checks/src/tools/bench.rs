@@ -121,14 +121,7 @@ const BATCH: usize = 4096;
 /// does not. (Not Linux's `/proc/thread-self/schedstat`: measured on this
 /// project's VMs, it advances in 4 ms steps, ±3 % of a 140 ms run.)
 fn thread_cpu_seconds() -> Option<f64> {
-    #[cfg(unix)]
-    {
-        use nix::time::{ClockId, clock_gettime};
-        let now = clock_gettime(ClockId::CLOCK_THREAD_CPUTIME_ID).ok()?;
-        Some(now.tv_sec() as f64 + now.tv_nsec() as f64 * 1e-9)
-    }
-    #[cfg(not(unix))]
-    None
+    crate::platform::thread_cpu_seconds()
 }
 
 /// Shoots every ray at `bvh` (closest hit in the camera's range (0, ∞)) on
@@ -240,7 +233,7 @@ mod tests {
     }
 
     #[test]
-    #[cfg(unix)]
+    #[cfg(all(unix, not(feature = "portable")))]
     fn the_thread_cpu_clock_resolves_a_fifth_of_a_millisecond() {
         // A 200 µs spin must show on the clock, and no more than the wall time it took
         // (plus 50 µs for the readings). Linux's schedstat, read before, advanced in 4 ms
