@@ -206,6 +206,21 @@ mod code {
             1.0,
             "a ray touching an edge has t_enter = t_exit: the box is closed, test t_enter ≤ t_exit",
         )?;
+        // Behind the origin, in a range that reaches back: x [(−1−3)/1, (1−3)/1] = [−4, −2],
+        // y [−10, 10], z parallel through the slab: the span (−4, −2), its exit widened toward
+        // +∞, i.e. by the factor 1 − 2γ₃ for a negative t.
+        let r = ray([3.0, 0.0, 0.0], [1.0, 0.1, 0.0]);
+        let back = Interval::new(-10.0, 10.0);
+        let case =
+            format!("cube [−1, 1]³, {}, range (−10, 10) (the box lies behind the origin)", show_ray(&r));
+        expect_span(
+            &case,
+            hit_slabs(&r, LO, HI, back),
+            -4.0,
+            -2.0,
+            "a negative exit t is widened by (1 − 2γ₃), toward +∞, as a positive one is by (1 + 2γ₃): \
+             t_far *= if t_far ≥ 0 { 1 + 2γ₃ } else { 1 − 2γ₃ }",
+        )?;
         // Misses.
         for (r, range, why) in [
             (ray([-3.0, 0.0, 0.0], [1.0, 1.0, 0.0]), ALL, "x [2, 4] and y [−1, 1] do not overlap: no hit"),
@@ -225,7 +240,7 @@ mod code {
                 format!("cube [−1, 1]³, {}, range ({}, {})", show_ray(&r), num(range.min), num(range.max));
             ensure(got.is_none(), case, "None", show_span(&got), why)?;
         }
-        Ok("4 hits and 3 misses".into())
+        Ok("5 hits and 3 misses".into())
     }
 
     pub(super) fn slabs_extreme(hit_slabs: SlabsFn) -> CheckResult {
@@ -1284,19 +1299,22 @@ mod code {
                 "keep the closest hit: shrink range.max to each hit's t and test every triangle",
             )?;
         }
-        // Mesh uvs 2·(x, y) and normals (x, 0, 1)/|…| per vertex, interpolated at (0.75, 0.25).
+        // Mesh uvs 2·(x, y) + (1, 3) (no corner's uv is zero, so each corner's weight shows) and
+        // normals (x, 0, 1)/|…| per vertex, interpolated at (0.75, 0.25).
         let mut textured = quad();
-        textured.uvs = textured.positions.iter().map(|p| 2.0 * p.truncate()).collect();
+        textured.uvs = textured.positions.iter().map(|p| 2.0 * p.truncate() + Vec2::new(1.0, 3.0)).collect();
         textured.normals = textured.positions.iter().map(|p| Vec3::new(p.x, 0.0, 1.0).normalize()).collect();
         let r = down(0.75, 0.25);
-        let case = format!("{name} with uvs 2·(x, y) and normals (x, 0, 1) normalised, {}", show_ray(&r));
+        let case =
+            format!("{name} with uvs 2·(x, y) + (1, 3) and normals (x, 0, 1) normalised, {}", show_ray(&r));
         let got = hit_mesh(&r, &textured, ALL);
         let Some(h) = got else { return Err(fail(case, "a hit", show_hit(&got), "test every triangle")) };
-        // Weights (1 − β − γ, β, γ) = (0.25, 0.5, 0.25): uv = 0.5·(2, 0) + 0.25·(2, 2) = (1.5, 0.5).
+        // Weights (1 − β − γ, β, γ) = (0.25, 0.5, 0.25) of uv_a = (1, 3), uv_b = (3, 3), uv_c = (3, 5):
+        // uv = (0.25 + 1.5 + 0.75, 0.75 + 1.5 + 1.25) = (2.5, 3.5).
         close3(
-            &case,
+            format!("{case}: the hit's uv"),
             Vec3::new(h.uv.x, h.uv.y, 0.0),
-            Vec3::new(1.5, 0.5, 0.0),
+            Vec3::new(2.5, 3.5, 0.0),
             TOL,
             "with mesh uvs, uv = (1 − β − γ)uv_a + β·uv_b + γ·uv_c",
         )?;
