@@ -19,6 +19,21 @@ pub fn finite(x: f64) -> Option<Float> {
     f.is_finite().then_some(f)
 }
 
+/// What numbers must be, in messages, given what was found: "finite
+/// numbers" for NaN and ±∞, and "numbers within the range of 32-bit floats
+/// (±3.4028235e38)" for values finite in the file but not as a `Float` (1e39
+/// in an f32 build; an f64 build has no such value). One number: "a finite
+/// number", "a number within …".
+pub fn finite_words(found: &[f64]) -> String {
+    let (article, plural) = if found.len() == 1 { ("a ", "") } else { ("", "s") };
+    if found.iter().all(|x| x.is_finite()) {
+        let bits = 8 * size_of::<Float>();
+        format!("{article}number{plural} within the range of {bits}-bit floats (±{:e})", Float::MAX)
+    } else {
+        format!("{article}finite number{plural}")
+    }
+}
+
 /// A number for messages: shortest round-trip digits, in exponent form when
 /// very large or small (`1e39`, not forty digits).
 pub fn number(x: f64) -> String {
@@ -39,26 +54,73 @@ pub fn unit(v: Vec3, what: &str) -> Result<Vec3, String> {
     v.try_normalize().ok_or_else(|| format!("{what} must be a non-zero vector, found {}", show(v)))
 }
 
-/// The camera's view must be defined: `eye ≠ at`, and `up` not parallel to
-/// the view direction d = at − eye, tested as |up × d| ≤ 10⁻⁶·|up|·|d| (the
-/// sine of the angle between them at most 10⁻⁶, which also catches a zero
-/// `up`). Book: §1.4 Look-at.
-pub fn check_view(eye: Vec3, at: Vec3, up: Vec3) -> Result<(), String> {
-    let view = at - eye;
+/// The words a camera's view is written in: a TOML file's `eye` and `at`, or
+/// a 6.837 file's `center` and `direction`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ViewWords {
+    Toml,
+    Mit6837,
+}
+
+/// The camera's view must be defined: a non-zero view direction `view`
+/// (TOML: at − eye; 6.837: `direction`), and `up` not parallel to it, tested
+/// as |up × d| ≤ 10⁻⁶·|up|·|d| (the sine of the angle between them at most
+/// 10⁻⁶, which also catches a zero `up`) on both vectors scaled to a largest
+/// component of 1, so that neither a far target (at = [1e20, 0, −5]) nor a
+/// tiny direction overflows or underflows the test. Book: §1.4 Look-at.
+///
+/// Returns the target the scene keeps: `None` for `at` itself, or, when at −
+/// eye is too long or too short for its length to be computed in `Float`
+/// (its square overflows or underflows) or lost beside eye, a target one
+/// step of |eye| (at least 1) along the same direction: a far target is a
+/// way of saying "look along this direction".
+pub fn check_view(
+    eye: Vec3,
+    at: Vec3,
+    view: Vec3,
+    up: Vec3,
+    words: ViewWords,
+) -> Result<Option<Vec3>, String> {
+    let shown = match words {
+        ViewWords::Toml => format!("the view direction at − eye = {}", show(view)),
+        ViewWords::Mit6837 => format!("direction {}", show(view)),
+    };
     if view == Vec3::ZERO {
-        return Err(format!("at must differ from eye, both are {}", show(eye)));
+        return Err(match words {
+            ViewWords::Toml => format!("at must differ from eye, both are {}", show(eye)),
+            ViewWords::Mit6837 => "direction must be a non-zero vector, found [0, 0, 0]".to_owned(),
+        });
     }
     if !view.is_finite() {
-        return Err(format!("the view direction at − eye = {} is not finite", show(view)));
-    }
-    if up.cross(view).length() <= 1e-6 * up.length() * view.length() {
         return Err(format!(
-            "up {} is parallel to the view direction at − eye = {} (or zero): the camera's roll is undefined",
-            show(up),
-            show(view)
+            "{shown} is beyond the range of {}-bit floats (±{:e}): only the direction counts, so bring the \
+             target closer",
+            8 * size_of::<Float>(),
+            Float::MAX
         ));
     }
-    Ok(())
+    let scaled = |v: Vec3| v / v.abs().max_element();
+    let d = scaled(view);
+    if up == Vec3::ZERO
+        || !up.is_finite()
+        || scaled(up).cross(d).length() <= 1e-6 * scaled(up).length() * d.length()
+    {
+        return Err(format!(
+            "up {} is parallel to {shown} (or zero): the camera's roll is undefined",
+            show(up)
+        ));
+    }
+    let kept = at - eye;
+    let length2 = kept.length_squared();
+    if kept != Vec3::ZERO && length2.is_finite() && length2 >= Float::MIN_POSITIVE {
+        return Ok(None);
+    }
+    let step = eye.abs().max_element().max(1.0);
+    let target = eye + step * d.normalize();
+    if target == eye || !target.is_finite() {
+        return Err(format!("{shown} is lost beside eye {}: eye is too far from the origin", show(eye)));
+    }
+    Ok(Some(target))
 }
 
 /// How flat a triangle may be: its height over the longest edge at most this
@@ -201,11 +263,37 @@ mod tests {
     #[test]
     fn up_along_the_view_is_rejected_but_a_tilted_up_is_not() {
         let eye = Vec3::new(0.0, 0.0, 5.0);
-        assert!(check_view(eye, Vec3::ZERO, Vec3::Z).is_err(), "up parallel to −view");
-        assert!(check_view(eye, Vec3::ZERO, Vec3::ZERO).is_err(), "zero up");
-        assert!(check_view(eye, eye, Vec3::Y).is_err(), "eye = at");
-        // sin θ = 10⁻³ ≫ 10⁻⁶: accepted although far from perpendicular.
-        assert!(check_view(eye, Vec3::ZERO, Vec3::new(1e-3, 0.0, 1.0)).is_ok());
+        let toml = |at: Vec3, up: Vec3| check_view(eye, at, at - eye, up, ViewWords::Toml);
+        assert!(toml(Vec3::ZERO, Vec3::Z).is_err(), "up parallel to −view");
+        assert!(toml(Vec3::ZERO, Vec3::ZERO).is_err(), "zero up");
+        assert_eq!(toml(eye, Vec3::Y).unwrap_err(), "at must differ from eye, both are [0, 0, 5]");
+        // sin θ = 10⁻³ ≫ 10⁻⁶: accepted although far from perpendicular, and `at` kept.
+        assert_eq!(toml(Vec3::ZERO, Vec3::new(1e-3, 0.0, 1.0)), Ok(None));
+        // 6.837's words for a zero direction.
+        assert_eq!(
+            check_view(eye, eye, Vec3::ZERO, Vec3::Y, ViewWords::Mit6837).unwrap_err(),
+            "direction must be a non-zero vector, found [0, 0, 0]"
+        );
+    }
+
+    #[test]
+    fn a_far_target_is_a_direction_and_a_tiny_one_too() {
+        // |at − eye|² = 10⁴⁰ overflows f32: the target becomes eye + 1·d̂, d̂ ≈ +x (in f64 the
+        // square is finite and `at` is kept).
+        let (eye, at) = (Vec3::ZERO, Vec3::new(1e20, 0.0, -5.0));
+        let kept = check_view(eye, at, at - eye, Vec3::Y, ViewWords::Toml).unwrap();
+        assert_eq!(kept.is_some(), size_of::<Float>() == 4);
+        assert!((kept.unwrap_or(at).normalize() - Vec3::X).length() < 1e-6, "{kept:?}");
+        // A direction of 10⁻³⁰ from an eye at 10: lost beside eye (at = eye) in f32 and f64;
+        // the target becomes eye + 10·d̂.
+        let (eye, direction) = (Vec3::splat(10.0), Vec3::new(0.0, 0.0, -1e-30));
+        let target =
+            check_view(eye, eye + direction, direction, Vec3::Y, ViewWords::Mit6837).unwrap().unwrap();
+        assert_eq!(target, Vec3::new(10.0, 10.0, 0.0));
+        // at − eye beyond the float range: refused, saying so.
+        let said =
+            check_view(-Vec3::X * Float::MAX, Vec3::X * Float::MAX, Vec3::INFINITY, Vec3::Y, ViewWords::Toml);
+        assert!(said.unwrap_err().contains("beyond the range"), "overflow");
     }
 
     #[test]

@@ -14,8 +14,10 @@ pub struct SceneError {
 }
 
 impl SceneError {
+    /// An error at `line` and `column` of `file`; values quoted in `message`
+    /// longer than 40 characters are cut with an ellipsis ([`cut`]).
     pub fn new(file: impl Into<PathBuf>, line: usize, column: usize, message: impl Into<String>) -> Self {
-        Self { file: file.into(), line, column, message: message.into() }
+        Self { file: file.into(), line, column, message: cut(&message.into()) }
     }
 
     /// An error at byte `offset` of the file's `text`, located as 1-based line
@@ -29,6 +31,46 @@ impl SceneError {
         let (line, column) = line_column(text, offset);
         Self::new(file, line, column, message)
     }
+}
+
+/// The longest value quoted in a message; longer ones end in "…".
+const QUOTED: usize = 40;
+
+/// `message` with every quoted value (between backquotes or double quotes)
+/// longer than 40 characters cut to its first 39 and an ellipsis.
+pub fn cut(message: &str) -> String {
+    let mut out = String::with_capacity(message.len().min(400));
+    let mut rest = message;
+    while let Some(open) = rest.find(['`', '"']) {
+        let quote = rest[open..].chars().next().unwrap_or('`');
+        out.push_str(&rest[..=open]);
+        let after = &rest[open + 1..];
+        let close = after.find(quote).unwrap_or(after.len());
+        let value = &after[..close];
+        if value.chars().count() > QUOTED {
+            out.extend(value.chars().take(QUOTED - 1));
+            out.push('…');
+        } else {
+            out.push_str(value);
+        }
+        rest = &after[close..];
+        if let Some(q) = rest.chars().next() {
+            out.push(q);
+            rest = &rest[q.len_utf8()..];
+        }
+    }
+    out.push_str(rest);
+    // A number without quotes (a 100,000-digit literal in an overflow message) is cut too.
+    out.split(' ')
+        .map(|w| {
+            if w.chars().count() > 2 * QUOTED {
+                format!("{}…", w.chars().take(QUOTED - 1).collect::<String>())
+            } else {
+                w.to_owned()
+            }
+        })
+        .collect::<Vec<_>>()
+        .join(" ")
 }
 
 /// The 1-based line and column of byte `offset` in `text` (an offset past the
@@ -71,6 +113,16 @@ mod tests {
         assert_eq!(line_column(text, 8), (3, 1), "CRLF ends a line once");
         assert_eq!(line_column(text, 5), (2, 2), "inside é: taken back to its start");
         assert_eq!(line_column(text, 99), (3, 2), "past the end: the end");
+    }
+
+    #[test]
+    fn long_values_are_cut_with_an_ellipsis() {
+        let long = "9".repeat(100_000);
+        let said = SceneError::new("a.txt", 1, 1, format!("radius must be a number, found `{long}`")).message;
+        assert_eq!(said, format!("radius must be a number, found `{}…`", "9".repeat(39)));
+        let said = SceneError::new("a.txt", 1, 1, format!("expected a number, found {long}")).message;
+        assert_eq!(said, format!("expected a number, found {}…", "9".repeat(39)));
+        assert_eq!(cut("short `values` stay \"as they are\""), "short `values` stay \"as they are\"");
     }
 
     #[test]

@@ -26,10 +26,19 @@ impl Mesh {
     /// every model (`o`, `g`) of the file goes into this one mesh, and normals
     /// (`vn`) and texture coordinates (`vt`) are kept only when every vertex
     /// has them. Materials (`mtllib`) are ignored. Errors (as sentences naming
-    /// the file): unreadable file, OBJ syntax, no faces, a face index out of
-    /// range, a non-finite number, a zero normal.
+    /// the file): unreadable, not a regular file or larger than
+    /// [`files::MESH_LIMIT`](super::files::MESH_LIMIT), not UTF-8 (with the line
+    /// and column of the first bad byte), OBJ syntax, no faces, a face index
+    /// out of range, a non-finite number, a zero normal.
     pub fn load_obj(path: &Path) -> Result<Mesh, String> {
-        let bytes = std::fs::read(path).map_err(|e| format!("cannot read {}: {e}", path.display()))?;
+        let bytes = super::files::read_limited(path, super::files::MESH_LIMIT, "the mesh file")
+            .map_err(|e| format!("{}: {e}", path.display()))?;
+        // tobj reads lines of UTF-8 and says only "read error" of a bad byte: say where it is.
+        let bytes = super::files::utf8(bytes)
+            .map_err(|(line, column, e)| {
+                format!("{}:{line}:{column}: not a valid OBJ file: {e}", path.display())
+            })?
+            .into_bytes();
         let options = tobj::LoadOptions { triangulate: true, single_index: true, ..Default::default() };
         let (models, _materials) =
             tobj::load_obj_buf(&mut Cursor::new(bytes), &options, |_| Err(tobj::LoadError::OpenFileFailed))

@@ -30,8 +30,7 @@ use crate::math::{Float, Mat4, Vec3, radians};
 /// Reads the MIT 6.837 scene file at `path`; OBJ files (`TriangleMesh {
 /// obj_file f }`) are looked for relative to its folder.
 pub fn load_mit6837(path: &Path) -> Result<Scene, SceneError> {
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| SceneError::new(path, 0, 0, format!("cannot read the scene file: {e}")))?;
+    let text = super::files::read_scene(path)?;
     parse_mit6837(&text, path)
 }
 
@@ -167,9 +166,10 @@ impl<'a> Parser<'a> {
         match token.text.parse::<f64>() {
             Ok(x) => match checks::finite(x) {
                 Some(f) => Ok((f, token)),
-                None => {
-                    Err(self.error(&token, format!("{what} must be a finite number, found {}", token.text)))
-                }
+                None => Err(self.error(
+                    &token,
+                    format!("{what} must be {}, found {}", checks::finite_words(&[x]), token.text),
+                )),
             },
             Err(_) => {
                 Err(self.error(&token, format!("expected a number for {what}, found `{}`", token.text)))
@@ -348,7 +348,8 @@ impl<'a> Parser<'a> {
         let (extent, at_extent) = self.need(extent, last, block)?;
         let at = eye + direction;
         let where_ = if direction == Vec3::ZERO { at_direction } else { at_up };
-        self.at(&where_, checks::check_view(eye, at, up))?;
+        let view = checks::check_view(eye, at, direction, up, checks::ViewWords::Mit6837);
+        let at = self.at(&where_, view)?.unwrap_or(at);
         if perspective {
             if !(extent > 0.0 && extent < 180.0) {
                 return Err(

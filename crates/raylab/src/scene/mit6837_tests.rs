@@ -312,7 +312,10 @@ fn camera_and_file_errors() {
     insta::assert_snapshot!(error("PerspectiveCamera { center 0 0 10 direction 0 0 -1 up 0 1 0 angle 180 }"),
         @"scenes/a.txt:1:67: angle must be in (0, 180) degrees, found 180");
     insta::assert_snapshot!(error("OrthographicCamera { center 0 0 10 direction 0 0 -1 up 0 0 1 size 5 }"),
-        @"scenes/a.txt:1:56: up [0, 0, 1] is parallel to the view direction at − eye = [0, 0, -1] (or zero): the camera's roll is undefined");
+        @"scenes/a.txt:1:56: up [0, 0, 1] is parallel to direction [0, 0, -1] (or zero): the camera's roll is undefined");
+    // In the format's words: a 6.837 camera has a direction, not an `at`.
+    insta::assert_snapshot!(error("OrthographicCamera { center 0 0 10 direction 0 0 0 up 0 1 0 size 5 }"),
+        @"scenes/a.txt:1:46: direction must be a non-zero vector, found [0, 0, 0]");
     insta::assert_snapshot!(error("Group { numObjects 0 }"),
         @"scenes/a.txt: no camera: expected an OrthographicCamera or a PerspectiveCamera");
     insta::assert_snapshot!(error(&format!("{CAMERA}{CAMERA}")),
@@ -326,7 +329,7 @@ fn camera_and_file_errors() {
 #[test]
 fn object_errors() {
     insta::assert_snapshot!(group_error(1, "    TriangleMesh { obj_file missing.obj }"),
-        @"scenes/a.txt:4:29: obj_file `missing.obj`: cannot read scenes/missing.obj: No such file or directory (os error 2)");
+        @"scenes/a.txt:4:29: obj_file `missing.obj`: scenes/missing.obj: cannot read the mesh file: No such file or directory (os error 2)");
     insta::assert_snapshot!(group_error(3, "    Sphere { center 0 0 0 radius 1 }"),
         @"scenes/a.txt:3:16: numObjects is 3 but the block holds 1");
     insta::assert_snapshot!(group_error(1, "    BezierCurve { }"),

@@ -8,10 +8,12 @@
 
 mod checks;
 mod error;
+mod files;
 mod icosphere;
 mod mesh;
 mod mit6837;
 mod toml;
+mod toml_errors;
 mod toml_spec;
 #[cfg(test)]
 mod topology;

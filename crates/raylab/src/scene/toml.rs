@@ -14,6 +14,7 @@ use std::sync::Arc;
 use toml::Spanned;
 
 use super::checks::{self, show};
+use super::files::read_scene;
 use super::toml_spec::{
     CameraSpec, LightSpec, MaterialSpec, Num, Nums, ObjectSpec, RenderSpec, SHAPES, ScaleSpec, SceneSpec,
     StepSpec, TextureSpec, shape_keys,
@@ -29,8 +30,7 @@ use crate::math::{Float, Mat4, Vec3, radians};
 /// Reads the TOML scene file at `path` (format: `crates/raylab/SCENES.md`).
 /// Every error names the file, line and column and what was expected.
 pub fn load_toml(path: &Path) -> Result<Scene, SceneError> {
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| SceneError::new(path, 0, 0, format!("cannot read the scene file: {e}")))?;
+    let text = read_scene(path)?;
     parse_toml(&text, path)
 }
 
@@ -38,7 +38,7 @@ pub fn load_toml(path: &Path) -> Result<Scene, SceneError> {
 /// files are looked for relative to its folder.
 pub fn parse_toml(text: &str, path: &Path) -> Result<Scene, SceneError> {
     let spec: SceneSpec = toml::from_str(text).map_err(|e| {
-        let message = e.message().trim().replace('\n', "; ");
+        let message = super::toml_errors::explain(text, e.span(), e.message());
         match e.span() {
             Some(span) => SceneError::at_offset(path, text, span.start, message),
             None => SceneError::new(path, 0, 0, message),
@@ -75,7 +75,11 @@ impl Reader<'_> {
         checks::finite(*x.get_ref()).ok_or_else(|| {
             self.error(
                 &x.span(),
-                format!("{key} must be a finite number, found {}", checks::number(*x.get_ref())),
+                format!(
+                    "{key} must be {}, found {}",
+                    checks::finite_words(&[*x.get_ref()]),
+                    checks::number(*x.get_ref())
+                ),
             )
         })
     }
@@ -90,8 +94,9 @@ impl Reader<'_> {
         match (checks::finite(x), checks::finite(y), checks::finite(z)) {
             (Some(x), Some(y), Some(z)) => Ok(Vec3::new(x, y, z)),
             _ => {
+                let words = checks::finite_words(&[x, y, z]);
                 let [x, y, z] = [x, y, z].map(checks::number);
-                Err(self.error(&v.span(), format!("{key} must hold finite numbers, found [{x}, {y}, {z}]")))
+                Err(self.error(&v.span(), format!("{key} must hold {words}, found [{x}, {y}, {z}]")))
             }
         }
     }
@@ -183,7 +188,8 @@ impl Reader<'_> {
             (Some(up), false) => up.span(),
             _ => c.at.span(),
         };
-        self.at(&view_span, checks::check_view(eye, at, up))?;
+        let view = checks::check_view(eye, at, at - eye, up, checks::ViewWords::Toml);
+        let at = self.at(&view_span, view)?.unwrap_or(at);
         let present = [("fovy", span_of(&c.fovy)), ("height", span_of(&c.height))];
         match c.kind.get_ref().as_str() {
             "perspective" => {
@@ -689,7 +695,10 @@ impl Reader<'_> {
         let mut rows = [0.0; 16];
         for (row, &x) in rows.iter_mut().zip(numbers) {
             *row = checks::finite(x).ok_or_else(|| {
-                self.error(&m.span(), format!("matrix must hold finite numbers, found {x}"))
+                self.error(
+                    &m.span(),
+                    format!("matrix must hold {}, found {x}", checks::finite_words(&[x, x])),
+                )
             })?;
         }
         self.at(&m.span(), checks::affine_from_rows(&rows))

@@ -344,6 +344,23 @@ fn nan_and_infinite_literals_never_reach_the_scene() {
     assert_eq!(huge.is_err(), size_of::<Float>() == 4, "an error exactly in f32");
 }
 
+/// A far target says "look along this direction" (issue: `at = [1e20, 0, −5]` was refused as
+/// parallel to `up`, |at − eye|² overflowing f32): the scene keeps a target one unit along it.
+#[test]
+fn a_far_target_is_read_as_a_direction() {
+    let scene = parse(
+        "[camera]\ntype = \"perspective\"\neye = [0, 0, 0]\nat = [1e20, 0, -5]\nup = [0, 1, 0]\nfovy = 40\n",
+    )
+    .unwrap();
+    let Camera::Perspective { eye, at, up, .. } = scene.camera else { panic!("a perspective camera") };
+    assert_eq!((eye, up), (Vec3::ZERO, Vec3::Y));
+    // f32: at becomes eye + d̂, d̂ = (1, 0, −5·10⁻²⁰)/|…|; f64 computes |at − eye| and keeps at.
+    assert!((at.normalize() - Vec3::X).abs().max_element() <= ROUNDING, "at {at}");
+    // An ordinary target is kept as written.
+    let Camera::Perspective { at, .. } = parse(CAMERA).unwrap().camera else { panic!() };
+    assert_eq!(at, Vec3::ZERO);
+}
+
 #[test]
 fn camera_errors() {
     insta::assert_snapshot!(error("[camera]\ntype = \"perspective\"\neye = [0, 0, 5]\nat = [0, 0, 0]\nup = [0, 0, 2]\nfovy = 40\n"),
@@ -354,7 +371,7 @@ fn camera_errors() {
         @"scenes/a.toml:5:8: fovy must be in (0, 180) degrees, found 180");
     insta::assert_snapshot!(error("[camera]\ntype = \"orthographic\"\neye = [0, 0, 5]\nat = [0, 0, 0]\nfovy = 40\n"),
         @"scenes/a.toml:5:8: fovy is not a key of an orthographic camera (its keys: height)");
-    insta::assert_snapshot!(error("[image]\nwidth = 320\n"), @"scenes/a.toml:1:1: missing field `camera`");
+    insta::assert_snapshot!(error("[image]\nwidth = 320\n"), @"scenes/a.toml:1:1: the file needs a [camera] table");
 }
 
 #[test]
@@ -387,7 +404,7 @@ fn object_errors() {
     insta::assert_snapshot!(object_error("type = \"polygon\"\nvertices = [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0.5]]\n"),
         @"scenes/a.toml:8:12: the polygon is not planar: vertex 1 [1, 0, 0] is 0.2357 away from its plane (through vertex 0, with Newell's normal)");
     insta::assert_snapshot!(object_error("type = \"mesh\"\nfile = \"missing.obj\"\n"),
-        @"scenes/a.toml:8:8: mesh file `missing.obj`: cannot read scenes/missing.obj: No such file or directory (os error 2)");
+        @"scenes/a.toml:8:8: mesh file `missing.obj`: scenes/missing.obj: cannot read the mesh file: No such file or directory (os error 2)");
     insta::assert_snapshot!(object_error("type = \"cone\"\nmaterial = \"bleu\"\n[materials.red]\n[materials.blue]\n"),
         @"scenes/a.toml:8:12: unknown material `bleu` (the scene's materials: red, blue)");
     insta::assert_snapshot!(object_error("type = \"cone\"\ntransform = [{ translate = [1, 0, 0] }, { scale = [1, 0, 1] }]\n"),
@@ -415,9 +432,9 @@ fn light_material_image_and_syntax_errors() {
     insta::assert_snapshot!(error(&format!("{CAMERA}[image]\nwidth = 0\n")),
         @"scenes/a.toml:7:9: width must be in 1..=16384 pixels, found 0");
     insta::assert_snapshot!(error(&format!("{CAMERA}[image]\nwidth = 1.5\n")),
-        @"scenes/a.toml:7:9: invalid type: floating point `1.5`, expected i64");
+        @"scenes/a.toml:7:9: `image.width` must be a whole number, found the number 1.5");
     insta::assert_snapshot!(error(&format!("{CAMERA}[objects]\n")),
-        @"scenes/a.toml:6:1: invalid type: map, expected a sequence");
+        @"scenes/a.toml:6:1: [objects] must be an array, found a table");
     insta::assert_snapshot!(error("[camera\ntype = 1\n"), @"scenes/a.toml:1:8: unclosed table, expected `]`");
 }
 
@@ -444,9 +461,9 @@ fn render_table_and_area_light_errors() {
     insta::assert_snapshot!(render("spp = 1025\n"),
         @"scenes/a.toml:7:7: spp must be in 1..=1024, found 1025");
     insta::assert_snapshot!(render("transparent_shadows = 1\n"),
-        @"scenes/a.toml:7:23: invalid type: integer `1`, expected a boolean");
+        @"scenes/a.toml:7:23: `render.transparent_shadows` must be true or false, found the whole number 1");
     insta::assert_snapshot!(render("samples = 4\n"),
-        @"scenes/a.toml:7:1: unknown field `samples`, expected one of `depth`, `weight`, `transparent_shadows`, `area_samples`, `spp`");
+        @"scenes/a.toml:7:1: unknown key `samples`: expected one of `depth`, `weight`, `transparent_shadows`, `area_samples`, `spp` (in [render])");
     let light = |body: &str| error(&format!("{CAMERA}[[lights]]\n{body}"));
     insta::assert_snapshot!(light("type = \"rect\"\ncorner = [0, 1, 0]\nedge_u = [1, 0, 0]\nedge_v = [-2, 0, 0]\n"),
         @"scenes/a.toml:10:10: a rect light's edges must not be parallel, found edge_u [1, 0, 0] and edge_v [-2, 0, 0]");
@@ -547,4 +564,56 @@ fn texture_errors() {
         missing.starts_with("scenes/a.toml:7:36: image file `missing.png`: scenes/missing.png"),
         "{missing}"
     );
+}
+
+/// The messages a student writing scenes met (found by corrupting scene files): each now names
+/// the key and its path, the value and what was expected, in the format's words.
+#[test]
+fn messages_name_the_key_the_value_and_the_limit_in_the_formats_words() {
+    // Duplicates name the key or table and both lines.
+    insta::assert_snapshot!(error(&format!("{CAMERA}[image]\nwidth = 1\nwidth = 2\n")),
+        @"scenes/a.toml:8:1: duplicate key `width` in [image]: first at line 7, again at line 8");
+    insta::assert_snapshot!(error(&format!("{CAMERA}[image]\nwidth = 1\n[image]\nheight = 2\n")),
+        @"scenes/a.toml:8:2: duplicate table [image]: first at line 6, again at line 8");
+    // No Rust type names: the key's path and the format's words.
+    insta::assert_snapshot!(error(&format!("{CAMERA}[materials.glass]\ntexture = 3\n")),
+        @"scenes/a.toml:7:11: `materials.glass.texture` must be a table, found the whole number 3");
+    insta::assert_snapshot!(error(&format!("{CAMERA}[image]\nwidth = 2.5\n")),
+        @"scenes/a.toml:7:9: `image.width` must be a whole number, found the number 2.5");
+    insta::assert_snapshot!(error(&format!("{CAMERA}[[objects]]\ntype = \"sphere\"\ncenter = [0, 0, 0]\nradius = 1\n[[objects]]\ntype = \"sphere\"\ncenter = [0, 0, 0]\nradius = \"big\"\n")),
+        @r#"scenes/a.toml:13:10: `objects[1].radius` must be a number, found the string "big""#);
+    // A 100,000-digit number is cut, not echoed.
+    let long = error(&format!("{CAMERA}[image]\nwidth = {}\n", "9".repeat(100_000)));
+    assert!(long.len() < 200, "{long}");
+    assert!(long.contains("`image.width`"), "{long}");
+    // 1e39 is finite: the limit is f32's range (an f64 build reads it).
+    let huge = parse(&format!("{CAMERA}[[objects]]\ntype = \"sphere\"\ncenter = [0, 0, 0]\nradius = 1e39\n"));
+    if size_of::<Float>() == 4 {
+        assert_eq!(
+            huge.unwrap_err().to_string(),
+            "scenes/a.toml:9:10: radius must be a number within the range of 32-bit floats (±3.4028235e38), \
+             found 1e39"
+        );
+    }
+}
+
+#[test]
+fn files_that_are_not_utf8_or_endless_are_refused_with_where() {
+    let dir = temp_dir("toml-bytes");
+    // A Latin-1 é in a comment: the line and column of the byte.
+    let path = dir.join("latin1.toml");
+    std::fs::write(&path, [CAMERA.as_bytes(), b"[image]\nwidth = 4 # caf\xe9\n"].concat()).unwrap();
+    let err = load_toml(&path).unwrap_err();
+    assert_eq!((err.line, err.column), (7, 16));
+    assert_eq!(err.message, "byte 0xE9 is not UTF-8 text (save the file as UTF-8)");
+    // An OBJ with a bad byte: its line; a mesh path naming a device: refused before reading.
+    std::fs::write(dir.join("bad.obj"), b"v 0 0 0\nv 1 0 0\nv 0 1 0 # \xff\nf 1 2 3\n").unwrap();
+    let object = |file: &str| format!("{CAMERA}[[objects]]\ntype = \"mesh\"\nfile = \"{file}\"\n");
+    let said = parse_toml(&object("bad.obj"), &dir.join("a.toml")).unwrap_err().message;
+    assert!(said.contains("bad.obj:3:11: not a valid OBJ file: byte 0xFF is not UTF-8"), "{said}");
+    #[cfg(unix)]
+    {
+        let said = parse_toml(&object("/dev/zero"), &dir.join("a.toml")).unwrap_err().message;
+        assert!(said.ends_with("the mesh file is not a regular file (a folder or a device?)"), "{said}");
+    }
 }
