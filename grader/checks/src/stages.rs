@@ -46,90 +46,9 @@ pub fn about(lecture: &str) -> &'static str {
 /// (32 primitives or fewer), and where a hierarchy draws a scene wrong, the
 /// geometry comparison names `09/geometry/…`.
 pub fn needs(lecture: &str) -> &'static [&'static str] {
-    const CAMERA: &[&str] = &[
-        "01/look_at",
-        "01/screen_coords",
-        "01/PerspectiveCamera::generate_ray",
-        "01/OrthographicCamera::generate_ray",
-    ];
-    const SPHERES: &[&str] = &[
-        "01/look_at",
-        "01/screen_coords",
-        "01/PerspectiveCamera::generate_ray",
-        "01/OrthographicCamera::generate_ray",
-        "02/hit_sphere_stable",
-        "02/hit_plane",
-        "02/closest_hit",
-    ];
-    const FLAT: &[&str] = &[
-        "01/look_at",
-        "01/screen_coords",
-        "01/PerspectiveCamera::generate_ray",
-        "01/OrthographicCamera::generate_ray",
-        "02/hit_sphere_stable",
-        "02/hit_plane",
-        "02/closest_hit",
-        "03/hit_box",
-        "03/hit_polygon",
-        "03/hit_triangle",
-        "03/hit_mesh",
-    ];
-    const SHAPES: &[&str] = &[
-        "01/look_at",
-        "01/screen_coords",
-        "01/PerspectiveCamera::generate_ray",
-        "01/OrthographicCamera::generate_ray",
-        "02/hit_sphere_stable",
-        "02/hit_plane",
-        "02/closest_hit",
-        "03/hit_box",
-        "03/hit_polygon",
-        "03/hit_triangle",
-        "03/hit_mesh",
-        "04/hit_cylinder",
-        "04/hit_cone",
-        "04/hit_transformed",
-    ];
-    const LOCAL: &[&str] = &[
-        "01/look_at",
-        "01/screen_coords",
-        "01/PerspectiveCamera::generate_ray",
-        "01/OrthographicCamera::generate_ray",
-        "02/hit_sphere_stable",
-        "02/hit_plane",
-        "02/closest_hit",
-        "03/hit_box",
-        "03/hit_polygon",
-        "03/hit_triangle",
-        "03/hit_mesh",
-        "04/hit_cylinder",
-        "04/hit_cone",
-        "04/hit_transformed",
-        "05/shade_local",
-    ];
-    const TREE: &[&str] = &[
-        "01/look_at",
-        "01/screen_coords",
-        "01/PerspectiveCamera::generate_ray",
-        "01/OrthographicCamera::generate_ray",
-        "02/hit_sphere_stable",
-        "02/hit_plane",
-        "02/closest_hit",
-        "03/hit_box",
-        "03/hit_polygon",
-        "03/hit_triangle",
-        "03/hit_mesh",
-        "04/hit_cylinder",
-        "04/hit_cone",
-        "04/hit_transformed",
-        "05/shade_local",
-        "06/shade_with_shadows",
-        "07/mirror_direction",
-        "07/interface",
-        "07/refract",
-        "07/fresnel_dielectric",
-    ];
-    const ALL: &[&str] = &[
+    // The exercises the stages draw with, in course order; each stage needs those of the
+    // lectures before a bound.
+    const DRAWN_WITH: &[&str] = &[
         "01/look_at",
         "01/screen_coords",
         "01/PerspectiveCamera::generate_ray",
@@ -153,16 +72,15 @@ pub fn needs(lecture: &str) -> &'static [&'static str] {
         "08/trace_ray",
         "08/render",
     ];
-    match lecture {
-        "01" => &[],
-        "02" => CAMERA,
-        "03" => SPHERES,
-        "04" => FLAT,
-        "05" | "09" => SHAPES,
-        "06" | "07" => LOCAL,
-        "08" => TREE,
-        _ => ALL,
-    }
+    // Stages 05 and 09 draw with the intersections of 01–04; 07 with 05's shading, not 06's.
+    let before = match lecture {
+        "05" | "09" => "05",
+        "07" => "06",
+        "10" => "09",
+        other => other,
+    };
+    let count = DRAWN_WITH.iter().take_while(|need| need[..2] < *before).count();
+    &DRAWN_WITH[..count]
 }
 
 /// Whether stage `lecture`'s code is in this build (its lecture and the ones it draws with compiled).
