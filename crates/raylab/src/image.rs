@@ -108,6 +108,17 @@ impl Image {
         Ok(Self { width, height, pixels })
     }
 
+    /// Decodes a PNG (or any 8-bit RGB image the `image` crate reads) held in
+    /// `bytes`, read from `path` (named in errors), as linear colours. The
+    /// decoder's default limits bound what a small file may decode to (512 MiB).
+    pub fn decode_png(bytes: &[u8], path: impl AsRef<Path>) -> Result<Self, ImageError> {
+        let path = path.as_ref();
+        let decoded = image::load_from_memory(bytes).map_err(|e| io_error(path, e))?.to_rgb8();
+        let (width, height) = decoded.dimensions();
+        let pixels = decoded.pixels().map(|p| from_srgb8(p.0)).collect();
+        Ok(Self { width, height, pixels })
+    }
+
     /// Writes a 32-bit float RGB OpenEXR with the linear values unchanged
     /// (for depth and normal images). Refuses NaN and infinite values.
     #[allow(clippy::unnecessary_cast)] // a cast in f64 builds, none in f32 ones

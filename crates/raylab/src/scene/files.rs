@@ -1,5 +1,5 @@
-//! Reading the files a scene names, within stated sizes: a scene or mesh
-//! path that names an endless or huge file (`/dev/zero`, a
+//! Reading the files a scene names, within stated sizes: a scene, mesh or
+//! texture path that names an endless or huge file (`/dev/zero`, a
 //! mistyped path to a disk image) is refused before it is read whole, and
 //! text that is not UTF-8 is refused with the line and column of the first
 //! bad byte.
@@ -14,6 +14,10 @@ pub const SCENE_LIMIT: u64 = 16 << 20;
 /// The largest OBJ mesh read: 256 MiB (the 69,451-triangle Stanford bunny is
 /// 3 MiB as OBJ text; 256 MiB holds meshes of several million triangles).
 pub const MESH_LIMIT: u64 = 256 << 20;
+
+/// The largest texture image read: 64 MiB of PNG (decoded within the image
+/// decoder's own 512 MiB limit).
+pub const TEXTURE_LIMIT: u64 = 64 << 20;
 
 /// The bytes of the regular file at `path`, at most `limit` of them; `what`
 /// names the file's role in the error ("the mesh file").

@@ -424,8 +424,10 @@ impl Reader<'_> {
         if kind == "image" {
             let file = self.need(&t.file, "file", &what, &whole)?;
             let path = self.dir.join(file.get_ref());
-            let image = Image::load_png(&path)
-                .map_err(|e| self.error(&file.span(), format!("image file `{}`: {e}", file.get_ref())))?;
+            let shown = |e: String| self.error(&file.span(), format!("image file `{}`: {e}", file.get_ref()));
+            let bytes = super::files::read_limited(&path, super::files::TEXTURE_LIMIT, "the image file")
+                .map_err(|e| shown(format!("{}: {e}", path.display())))?;
+            let image = Image::decode_png(&bytes, &path).map_err(|e| shown(e.to_string()))?;
             return Ok(Texture::Image { file: path, image: Arc::new(image) });
         }
         let scale = match &t.scale {

@@ -615,5 +615,10 @@ fn files_that_are_not_utf8_or_endless_are_refused_with_where() {
     {
         let said = parse_toml(&object("/dev/zero"), &dir.join("a.toml")).unwrap_err().message;
         assert!(said.ends_with("the mesh file is not a regular file (a folder or a device?)"), "{said}");
+        // The same for an image texture.
+        let texture =
+            format!("{CAMERA}[materials.a]\ntexture = {{ type = \"image\", file = \"/dev/zero\" }}\n");
+        let said = parse_toml(&texture, &dir.join("a.toml")).unwrap_err().message;
+        assert!(said.ends_with("the image file is not a regular file (a folder or a device?)"), "{said}");
     }
 }
