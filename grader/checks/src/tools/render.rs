@@ -64,6 +64,70 @@ pub struct RenderArgs {
     /// Print the ray tree of pixel X,Y (0,0 is the top left).
     #[arg(long, value_parser = parse_pixel)]
     tree: Option<(u32, u32)>,
+    /// Render even when the scene asks for more work or memory than the budget
+    /// (`RAY_BUDGET` rays, `IMAGE_BUDGET` bytes of image).
+    #[arg(long)]
+    allow_large: bool,
+}
+
+/// The most rays a render may cast without `--allow-large`: 2·10⁹, minutes of
+/// work on a laptop's cores (the lecture scenes cast under 10⁷, the 6.837
+/// scenes under 10⁸ at their own sizes).
+pub const RAY_BUDGET: f64 = 2e9;
+
+/// The most memory the image of a render may take without `--allow-large`:
+/// 1 GiB (a 9,000 × 9,000 image in f32; the 16384 × 16384 the format allows
+/// takes 3 GiB).
+pub const IMAGE_BUDGET: f64 = (1u64 << 30) as f64;
+
+/// The most rays a render of `scene` may cast, an upper bound: pixels × eye
+/// rays per pixel × the nodes of a full ray tree (1 + b + b² + … + b^depth,
+/// b = 1 or 2 when some material reflects and/or transmits, 0 when none does)
+/// × (1 + the shadow rays of a shaded point: one per light, `area_samples`
+/// per area light). An AOV casts the eye rays only.
+pub fn ray_bound(scene: &Scene, settings: &TraceSettings, sampling: Sampling, aov: Option<Aov>) -> f64 {
+    use raylab::scene::LightKind;
+    let eye = scene.width as f64 * scene.height as f64 * sampling.spp as f64;
+    if aov.is_some() {
+        return eye;
+    }
+    let reflects = scene.materials.iter().any(|m| m.reflective.max_element() > 0.0);
+    let transmits = scene.materials.iter().any(|m| m.transparent.max_element() > 0.0);
+    let branching = f64::from(u8::from(reflects) + u8::from(transmits));
+    let nodes: f64 = (0..=settings.max_depth.min(64)).map(|k| branching.powi(k as i32)).sum();
+    let shadow: f64 = if settings.shadows {
+        let per_light = |kind: &LightKind| match kind {
+            LightKind::Rect { .. } | LightKind::Sphere { .. } => settings.area_samples as f64,
+            _ => 1.0,
+        };
+        scene.lights.iter().map(|l| per_light(&l.kind)).sum()
+    } else {
+        0.0
+    };
+    eye * nodes * (1.0 + shadow)
+}
+
+/// Refuses a render whose ray bound or image size is over budget, saying
+/// both figures and what lowers them.
+fn within_budget(scene: &Scene, rays: f64) -> Result<(), String> {
+    let bytes = scene.width as f64 * scene.height as f64 * size_of::<raylab::Color>() as f64;
+    if rays > RAY_BUDGET {
+        return Err(format!(
+            "this render may cast up to {rays:.1e} rays, more than the {RAY_BUDGET:.0e} allowed by default: \
+             lower --size, --spp, --samples or --depth (or the scene's [render] table), or pass --allow-large"
+        ));
+    }
+    if bytes > IMAGE_BUDGET {
+        return Err(format!(
+            "a {}×{} image takes {:.1} GiB, more than the {:.0} GiB allowed by default: lower --size, or \
+             pass --allow-large",
+            scene.width,
+            scene.height,
+            bytes / (1u64 << 30) as f64,
+            IMAGE_BUDGET / (1u64 << 30) as f64
+        ));
+    }
+    Ok(())
 }
 
 impl RenderArgs {
@@ -171,6 +235,9 @@ pub fn render(args: &RenderArgs) -> Result<(), String> {
         scene.height = h;
     }
     let settings = args.settings(&scene);
+    if !args.allow_large {
+        within_budget(&scene, ray_bound(&scene, &settings, args.sampling(&scene), args.aov))?;
+    }
     if let Some(pixel) = args.tree {
         let (color, tree) = shade::pixel_tree(&scene, pixel, &settings)?;
         println!(
@@ -250,6 +317,54 @@ mod tests {
         let plain = &OWN[OWN.find("[camera]").unwrap()..];
         assert_eq!(settings(plain, &[]), default);
         assert_eq!(settings(plain, &["--transparent-shadows"]).shadow_mode, transmissive);
+    }
+
+    #[test]
+    fn the_ray_bound_counts_pixels_eye_rays_tree_nodes_and_shadow_rays() {
+        // 32×24 pixels, a point light and a rect light, a mirror: branching 1, depth 5 → 6 nodes.
+        let text = "[image]\nwidth = 32\nheight = 24\n\
+                    [camera]\ntype = \"perspective\"\neye = [0, 0, 5]\nat = [0, 0, 0]\nfovy = 40\n\
+                    [[lights]]\ntype = \"point\"\nposition = [0, 5, 0]\ncolor = [1, 1, 1]\n\
+                    [[lights]]\ntype = \"rect\"\ncorner = [0, 5, 0]\nedge_u = [1, 0, 0]\nedge_v = [0, 0, 1]\ncolor = [1, 1, 1]\n\
+                    [materials.m]\nreflective = [0.5, 0.5, 0.5]\n";
+        let scene = raylab::scene::parse_toml(text, Path::new("s.toml")).unwrap_or_else(|e| panic!("{e}"));
+        let one = Sampling { spp: 1, pattern: Pattern::Regular, filter: Filter::Box };
+        let settings = TraceSettings { area_samples: 16, ..TraceSettings::default() };
+        // 768 pixels × 1 × 6 nodes × (1 + 1 + 16) = 82,944.
+        assert_eq!(ray_bound(&scene, &settings, one, None), 82_944.0);
+        assert_eq!(ray_bound(&scene, &settings, one, Some(Aov::Depth)), 768.0);
+        let no_shadows = TraceSettings { shadows: false, ..settings };
+        assert_eq!(ray_bound(&scene, &no_shadows, one, None), 768.0 * 6.0);
+        // The issue's case: spp 1024 and 4096 area samples at 32×24: 1.9·10¹⁰ rays, refused.
+        let heavy = TraceSettings { area_samples: 4096, ..settings };
+        let many = Sampling { spp: 1024, ..one };
+        let rays = ray_bound(&scene, &heavy, many, None);
+        assert_eq!(rays, 768.0 * 1024.0 * 6.0 * 4098.0);
+        let said = within_budget(&scene, rays).unwrap_err();
+        assert!(said.contains("1.9e10 rays") && said.contains("--allow-large"), "{said}");
+        // 16384 × 16384 pixels: 3 GiB of image in f32 (6 in f64), refused whatever the rays.
+        let mut big = scene.clone();
+        (big.width, big.height) = (16384, 16384);
+        let said = within_budget(&big, 1.0).unwrap_err();
+        assert!(said.starts_with("a 16384×16384 image takes"), "{said}");
+        // Every lecture scene, and every 6.837 scene that loads, is within budget at its own size.
+        let mut paths: Vec<_> =
+            crate::images::scene_files(None).unwrap().into_iter().map(|f| f.scene).collect();
+        let mit = crate::images::workspace_root().join("../shared/data/mit6837");
+        match std::fs::read_dir(&mit) {
+            Ok(entries) => paths.extend(entries.filter_map(|e| e.ok().map(|e| e.path()))),
+            Err(_) => println!("SKIPPED the 6.837 scenes' budget: {} is absent", mit.display()),
+        }
+        let mut checked = 0;
+        for path in paths.iter().filter(|p| p.extension().is_some_and(|e| e == "toml" || e == "txt")) {
+            let Ok(scene) = raylab::scene::load(path) else { continue };
+            let bound =
+                ray_bound(&scene, &shade::scene_settings(&scene), shade::scene_sampling(&scene), None);
+            assert!(within_budget(&scene, bound).is_ok(), "{}: {bound:e}", path.display());
+            checked += 1;
+        }
+        println!("{checked} scenes within budget");
+        assert!(checked >= 45, "{checked} scenes checked");
     }
 
     #[test]
