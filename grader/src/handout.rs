@@ -388,4 +388,109 @@ mod hint_tests {
             }
         }
     }
+
+    /// The functions named in the first column headed "function" (or
+    /// "exercise") of the table under the first heading starting with
+    /// `heading`: backquoted names before " — ", parenthesised notes left out.
+    fn table_names(text: &str, heading: &str) -> Option<std::collections::BTreeSet<String>> {
+        let after = &text[text.find(heading)?..];
+        let rows: Vec<&str> =
+            after.lines().skip_while(|l| !l.starts_with('|')).take_while(|l| l.starts_with('|')).collect();
+        let cells = |row: &str| -> Vec<String> {
+            row.trim().trim_matches('|').split('|').map(|c| c.trim().to_owned()).collect()
+        };
+        let header = cells(rows.first()?);
+        let column =
+            header.iter().position(|h| ["function", "exercise"].contains(&h.to_lowercase().as_str()))?;
+        let mut names = std::collections::BTreeSet::new();
+        for row in rows.iter().skip(2) {
+            let mut cell = cells(row).get(column)?.split(" — ").next()?.to_owned();
+            // Parenthesised notes ("(§1.2)", "(the body of `trace`)", "(p, n, dir, from)") are no names.
+            while let (Some(open), Some(close)) = (cell.find('('), cell.find(')')) {
+                if close < open {
+                    break;
+                }
+                cell.replace_range(open..=close, "");
+            }
+            for quoted in cell.split('`').skip(1).step_by(2) {
+                let name: String =
+                    quoted.chars().take_while(|c| c.is_alphanumeric() || *c == '_' || *c == ':').collect();
+                names.insert(name);
+            }
+        }
+        Some(names)
+    }
+
+    /// Each lecture's exercises (its SOLUTION regions) are the ones its README's
+    /// "Exercises" table and its book chapter's "Exercises" table list: a new or
+    /// renamed exercise that one of them misses fails here, naming the file.
+    #[test]
+    fn the_readme_and_the_chapter_list_the_lectures_exercises() {
+        let root = own_root();
+        let ws = Workspace::open(&root).unwrap();
+        let mut problems = Vec::new();
+        for lecture in &ws.lectures {
+            let mut exercises = std::collections::BTreeSet::new();
+            for file in files(&root.join("lectures").join(&lecture.folder).join("src")).unwrap() {
+                let text = std::fs::read_to_string(&file).unwrap();
+                let (_, found) = stub_solutions(&text, &lecture.number, &file.display().to_string()).unwrap();
+                exercises.extend(found.into_iter().map(|e| e.id[3..].to_owned()));
+            }
+            for place in
+                [format!("lectures/{}/README.md", lecture.folder), format!("book/src/{}.md", lecture.folder)]
+            {
+                let text = std::fs::read_to_string(root.join(&place)).unwrap_or_default();
+                let Some(listed) = table_names(&text, "## Exercises") else {
+                    problems.push(format!("{place}: no \"## Exercises\" table with a function column"));
+                    continue;
+                };
+                let missing: Vec<_> = exercises.difference(&listed).collect();
+                let extra: Vec<_> = listed.difference(&exercises).collect();
+                if !missing.is_empty() || !extra.is_empty() {
+                    problems.push(format!("{place}: missing {missing:?}, not exercises {extra:?}"));
+                }
+            }
+        }
+        assert!(problems.is_empty(), "{}", problems.join("\n"));
+    }
+
+    /// Every "Book: §N.M" of the lectures' and the kit's code names a section
+    /// heading ("## N.M …") of the book.
+    #[test]
+    fn every_book_reference_in_the_code_names_a_heading() {
+        let root = own_root();
+        let mut headings = std::collections::BTreeSet::new();
+        for entry in std::fs::read_dir(root.join("book/src")).unwrap() {
+            let text = std::fs::read_to_string(entry.unwrap().path()).unwrap_or_default();
+            for line in text.lines().filter(|l| l.starts_with("##")) {
+                if let Some(number) = line.trim_start_matches('#').split_whitespace().next() {
+                    headings.insert(number.to_owned());
+                }
+            }
+        }
+        let mut files_read = files(&root.join("lectures")).unwrap();
+        files_read.extend(files(&root.join("crates/raylab/src")).unwrap());
+        let (mut checked, mut problems) = (0, Vec::new());
+        for file in files_read.iter().filter(|f| f.extension().is_some_and(|e| e == "rs")) {
+            let text = std::fs::read_to_string(file).unwrap();
+            for (n, line) in text.lines().enumerate().filter(|(_, l)| l.contains("Book: §")) {
+                let after = &line[line.find("Book: §").unwrap()..];
+                for reference in after.split('§').skip(1) {
+                    let number: String =
+                        reference.chars().take_while(|c| c.is_ascii_digit() || *c == '.').collect();
+                    let number = number.trim_end_matches('.');
+                    checked += 1;
+                    if !headings.contains(number) {
+                        problems.push(format!(
+                            "{}:{}: §{number} is no heading of the book",
+                            file.display(),
+                            n + 1
+                        ));
+                    }
+                }
+            }
+        }
+        assert!(checked >= 100, "{checked} references");
+        assert!(problems.is_empty(), "{}", problems.join("\n"));
+    }
 }
