@@ -314,7 +314,7 @@ impl<'a> Parser<'a> {
         // colour. A file without a `Lights` block (and without an ambient light)
         // gets a white ambient light, so the shading equation gives exactly that.
         let unlit = !seen.iter().any(|t| t.text == "Lights") && ambient == BLACK;
-        Ok(Scene {
+        let scene = Scene {
             camera,
             width: 200,
             height: 200,
@@ -324,7 +324,10 @@ impl<'a> Parser<'a> {
             materials: self.materials,
             objects: self.objects,
             render: RenderSettings::default(),
-        })
+        };
+        super::radiance::check(&scene, super::radiance::Words::Mit6837)
+            .map_err(|e| SceneError::new(self.path, 0, 0, e))?;
+        Ok(scene)
     }
 
     /// `OrthographicCamera { center direction up size }` or

@@ -512,3 +512,21 @@ fn the_course_checkerboard_scenes_load() {
         assert_eq!(scene.materials[2].diffuse, Color::new(1.0, 0.0, 0.0));
     }
 }
+
+/// A transparent colour whose powers overflow down the ray tree is refused in 6.837's words
+/// (found by corrupting scene files: `transparentColor 1e15` rendered to an image the writer
+/// refused as NaN).
+#[test]
+#[allow(clippy::unnecessary_cast)] // widening Float to f64: the identity in an f64 build
+fn colours_whose_products_overflow_are_refused_in_the_formats_words() {
+    // g = MAX^¼·10: g⁵ (depth 5) is beyond the range in f32 and f64 alike.
+    let g = (Float::MAX as f64).powf(0.25) * 10.0;
+    let text = format!(
+        "{CAMERA}Background {{ color 0.5 0.5 0.5 }}\nMaterials {{\n    numMaterials 1\n    PhongMaterial {{ \
+         diffuseColor 1 1 1 transparentColor {g:e} {g:e} {g:e} indexOfRefraction 1.5 }}\n}}\n\
+         Group {{\n    numObjects 1\n    MaterialIndex 0\n    Sphere {{ center 0 0 0 radius 1 }}\n}}\n"
+    );
+    let said = error(&text);
+    assert!(said.starts_with("scenes/a.txt: the transparentColor of material 0 = "), "{said}");
+    assert!(said.contains("the largest value it may have here is"), "{said}");
+}

@@ -12,6 +12,7 @@ mod files;
 mod icosphere;
 mod mesh;
 mod mit6837;
+mod radiance;
 mod toml;
 mod toml_errors;
 mod toml_spec;

@@ -165,7 +165,10 @@ impl Reader<'_> {
             ),
         };
         let render = self.render(&spec.render)?;
-        Ok(Scene { camera, width, height, background, ambient, lights, materials, objects, render })
+        let scene = Scene { camera, width, height, background, ambient, lights, materials, objects, render };
+        super::radiance::check(&scene, super::radiance::Words::Toml)
+            .map_err(|e| SceneError::new(self.path, 0, 0, e))?;
+        Ok(scene)
     }
 
     fn size(&self, v: &Option<Spanned<i64>>, key: &str, default: u32) -> Result<u32, SceneError> {

@@ -622,3 +622,39 @@ fn files_that_are_not_utf8_or_endless_are_refused_with_where() {
         assert!(said.ends_with("the image file is not a regular file (a folder or a device?)"), "{said}");
     }
 }
+
+/// Values finite each, whose products overflow the precision built, are refused at load time
+/// with the key to blame, its value and the largest value it may have.
+#[test]
+#[allow(clippy::unnecessary_cast)] // widening Float to f64: the identity in an f64 build
+fn colours_whose_products_overflow_are_refused_with_the_largest_accepted_value() {
+    // A background of half the largest float, summed over 4 eye rays: 2·MAX.
+    let half = Float::MAX as f64 / 2.0;
+    let text = format!("{CAMERA}[image]\nbackground = [{half:e}, 0, 0]\n[render]\nspp = 4\n");
+    let said = error(&text);
+    let bits = 8 * size_of::<Float>();
+    assert!(said.starts_with(&format!("scenes/a.toml: image.background = {:e}", half as Float)), "{said}");
+    assert!(said.contains(&format!("with depth 5, spp 4, beyond the range of {bits}-bit floats")), "{said}");
+    // The largest accepted: MAX/4 to the bisection's last bits.
+    let largest: f64 = said.rsplit(' ').next().unwrap().parse().unwrap();
+    let quarter = Float::MAX as f64 / 4.0;
+    assert!((largest - quarter).abs() <= 1e-3 * quarter, "{largest:e} against {quarter:e}");
+    // The same background with one eye ray loads.
+    assert!(parse(&format!("{CAMERA}[image]\nbackground = [{half:e}, 0, 0]\n")).is_ok());
+    // A transparent colour g with g⁵ (depth 5) beyond the range, seen against a grey
+    // background: the material's transparent key. Without anything lit or a background, the
+    // picture is black however deep the tree: no error.
+    let g = (Float::MAX as f64).powf(0.25) * 10.0;
+    let glass = format!(
+        "[materials.glass]\ntransparent = [{g:e}, {g:e}, {g:e}]\n[[objects]]\ntype = \"sphere\"\n\
+         center = [0, 0, 0]\nradius = 1\nmaterial = \"glass\"\n"
+    );
+    assert!(parse(&format!("{CAMERA}{glass}")).is_ok());
+    let text = format!(
+        "{CAMERA}[image]\nbackground = [0.5, 0.5, 0.5]\n[materials.glass]\ntransparent = [{g:e}, {g:e}, {g:e}]\n[[objects]]\ntype = \"sphere\"\n\
+         center = [0, 0, 0]\nradius = 1\nmaterial = \"glass\"\n"
+    );
+    let said = error(&text);
+    assert!(said.starts_with("scenes/a.toml: materials.glass.transparent = "), "{said}");
+    assert!(said.contains("the largest value it may have here is"), "{said}");
+}
