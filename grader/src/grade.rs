@@ -249,19 +249,7 @@ mod tests {
 
     #[test]
     fn selections_read_as_lecture_exercise_or_check() {
-        let info = |id: &str| Info {
-            id: id.into(),
-            lecture: id[..2].into(),
-            exercise: id.split('/').nth(1).unwrap().into(),
-            kind: "unit".into(),
-            points: 1,
-            needs: vec![],
-            about: String::new(),
-            hidden: false,
-            timeout_s: 10,
-            available: true,
-        };
-        let slabs = info("03/hit_slabs/unit");
+        let slabs = crate::verdict::test_info("03/hit_slabs/unit");
         let parse = |s: &[&str]| Selection::parse(s).unwrap();
         assert!(parse(&[]).matches(&slabs));
         assert!(parse(&["03"]).matches(&slabs));

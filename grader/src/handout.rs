@@ -363,6 +363,20 @@ mod hint_tests {
     use super::*;
     use crate::workspace::{Workspace, own_root};
 
+    /// A lecture's exercises, by their SOLUTION regions: `translate`, `Aabb::union`.
+    fn lecture_exercises(
+        root: &Path,
+        lecture: &crate::workspace::Lecture,
+    ) -> std::collections::BTreeSet<String> {
+        let mut exercises = std::collections::BTreeSet::new();
+        for file in files(&root.join("lectures").join(&lecture.folder).join("src")).unwrap() {
+            let text = std::fs::read_to_string(&file).unwrap();
+            let (_, found) = stub_solutions(&text, &lecture.number, &file.display().to_string()).unwrap();
+            exercises.extend(found.into_iter().map(|e| e.id[3..].to_owned()));
+        }
+        exercises
+    }
+
     /// `grader hint` reads `lectures/NN-*/hints.toml`: every exercise has
     /// hints, and every hint names an exercise of its lecture.
     #[test]
@@ -370,12 +384,7 @@ mod hint_tests {
         let root = own_root();
         let ws = Workspace::open(&root).unwrap();
         for lecture in &ws.lectures {
-            let mut exercises = std::collections::BTreeSet::new();
-            for file in files(&root.join("lectures").join(&lecture.folder).join("src")).unwrap() {
-                let text = std::fs::read_to_string(&file).unwrap();
-                let (_, found) = stub_solutions(&text, &lecture.number, &file.display().to_string()).unwrap();
-                exercises.extend(found.into_iter().map(|e| e.id[3..].to_owned()));
-            }
+            let exercises = lecture_exercises(&root, lecture);
             let hints = ws.hints(&lecture.number).unwrap();
             let hinted: std::collections::BTreeSet<String> = hints.keys().cloned().collect();
             assert_eq!(
@@ -430,12 +439,7 @@ mod hint_tests {
         let ws = Workspace::open(&root).unwrap();
         let mut problems = Vec::new();
         for lecture in &ws.lectures {
-            let mut exercises = std::collections::BTreeSet::new();
-            for file in files(&root.join("lectures").join(&lecture.folder).join("src")).unwrap() {
-                let text = std::fs::read_to_string(&file).unwrap();
-                let (_, found) = stub_solutions(&text, &lecture.number, &file.display().to_string()).unwrap();
-                exercises.extend(found.into_iter().map(|e| e.id[3..].to_owned()));
-            }
+            let exercises = lecture_exercises(&root, lecture);
             for place in
                 [format!("lectures/{}/README.md", lecture.folder), format!("book/src/{}.md", lecture.folder)]
             {

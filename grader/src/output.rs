@@ -150,22 +150,10 @@ pub fn gradescope(grade: &Grade) -> Value {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::verdict::{Failure, Info};
+    use crate::verdict::{Failure, Info, test_info};
 
     fn verdict(id: &str, status: Status, hidden: bool) -> Verdict {
-        let info = Info {
-            id: id.into(),
-            lecture: id[..2].into(),
-            exercise: id.split('/').nth(1).unwrap().into(),
-            kind: "unit".into(),
-            points: 2,
-            needs: vec![],
-            about: String::new(),
-            hidden,
-            timeout_s: 10,
-            available: true,
-        };
-        Verdict::new(info, status, "summary")
+        Verdict::new(Info { hidden, ..test_info(id) }, status, "summary")
     }
 
     /// The fields Gradescope reads (its autograder specification): a total

@@ -181,24 +181,10 @@ fn relative(root: &Path, file: &Path) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::verdict::Info;
     use crate::workspace::own_root;
 
     fn verdict(id: &str, status: Status) -> Verdict {
-        let mut parts = id.split('/');
-        let info = Info {
-            id: id.into(),
-            lecture: parts.next().unwrap().into(),
-            exercise: parts.next().unwrap().into(),
-            kind: "unit".into(),
-            points: 1,
-            needs: vec![],
-            about: String::new(),
-            hidden: false,
-            timeout_s: 10,
-            available: true,
-        };
-        Verdict::new(info, status, "")
+        Verdict::new(crate::verdict::test_info(id), status, "")
     }
 
     #[test]

@@ -283,24 +283,31 @@ pub fn apply_needs(verdicts: &mut [Verdict]) {
     }
 }
 
+/// The declaration of a visible unit check `id` (`NN/exercise/name`) worth 2
+/// points, built and with no needs: the driver's tests' fixture.
+#[cfg(test)]
+pub fn test_info(id: &str) -> Info {
+    let mut parts = id.split('/');
+    Info {
+        id: id.into(),
+        lecture: parts.next().unwrap().into(),
+        exercise: parts.next().unwrap().into(),
+        kind: "unit".into(),
+        points: 2,
+        needs: vec![],
+        about: String::new(),
+        hidden: false,
+        timeout_s: 10,
+        available: true,
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
 
     fn info(id: &str) -> Info {
-        let mut parts = id.split('/');
-        Info {
-            id: id.into(),
-            lecture: parts.next().unwrap().into(),
-            exercise: parts.next().unwrap().into(),
-            kind: "unit".into(),
-            points: 2,
-            needs: vec![],
-            about: String::new(),
-            hidden: false,
-            timeout_s: 10,
-            available: true,
-        }
+        test_info(id)
     }
 
     #[test]

@@ -146,67 +146,35 @@ pub fn render(lecture: &str, scene: &Scene) -> Result<Image, String> {
             raylab::render::render_image(w, h, |x, y| f(&camera.pixel_ray(x, y, w, h))).0
         };
         // The closest hit in (0, ∞) of `objects`, shaded by `shade`, or the background.
-        #[allow(unused_macros)]
-        macro_rules! drawn {
-            ($objects:expr, $shade:expr) => {{
-                let objects = $objects;
-                let shade = $shade;
-                Ok(pixels(&|ray: &Ray| {
-                    #[allow(unused_imports)] // `objects` may be a `dyn Intersector` already
-                    use raylab::Intersector;
-                    match objects.closest_hit(ray, raylab::Interval::POSITIVE) {
-                        Some(hit) => shade(ray, &hit),
-                        None => scene.background,
-                    }
-                }))
-            }};
-        }
+        type Shade<'a> = &'a (dyn Fn(&Ray, &raylab::Hit) -> Color + Sync);
+        #[allow(unused)]
+        let drawn = |objects: &dyn raylab::Intersector, shade: Shade| {
+            Ok::<Image, String>(pixels(
+                &|ray: &Ray| match objects.closest_hit(ray, raylab::Interval::POSITIVE) {
+                    Some(hit) => shade(ray, &hit),
+                    None => scene.background,
+                },
+            ))
+        };
+        let headlit: Shade = &|ray, hit| headlight(scene, ray, hit);
+        #[cfg(feature = "l04")]
+        let brute = l04_quadrics_transforms::BruteForce::new(&scene.objects);
         match lecture {
             "01" => return Ok(pixels(&sky)),
             #[cfg(feature = "l02")]
-            "02" => {
-                return drawn!(l02_ray_casting::Group::new(&scene.objects), |r: &Ray, hit: &raylab::Hit| {
-                    headlight(scene, r, hit)
-                });
-            }
+            "02" => return drawn(&l02_ray_casting::Group::new(&scene.objects), headlit),
             #[cfg(feature = "l03")]
-            "03" => {
-                return drawn!(
-                    crate::scene_objects::Lecture03(&scene.objects),
-                    |r: &Ray, hit: &raylab::Hit| { headlight(scene, r, hit) }
-                );
-            }
+            "03" => return drawn(&crate::scene_objects::Lecture03(&scene.objects), headlit),
             #[cfg(feature = "l04")]
-            "04" => {
-                return drawn!(
-                    l04_quadrics_transforms::BruteForce::new(&scene.objects),
-                    |r: &Ray, hit: &raylab::Hit| { headlight(scene, r, hit) }
-                );
-            }
+            "04" => return drawn(&brute, headlit),
             #[cfg(feature = "l09")]
-            "09" => {
-                let objects = l09_acceleration::intersector_for(&scene.objects);
-                return drawn!(objects.as_ref(), |r: &Ray, hit: &raylab::Hit| headlight(scene, r, hit));
-            }
+            "09" => return drawn(l09_acceleration::intersector_for(&scene.objects).as_ref(), headlit),
             #[cfg(feature = "l05")]
-            "05" => {
-                return drawn!(
-                    l04_quadrics_transforms::BruteForce::new(&scene.objects),
-                    |r: &Ray, hit: &raylab::Hit| { local(scene, r, hit) }
-                );
-            }
+            "05" => return drawn(&brute, &|ray, hit| local(scene, ray, hit)),
             #[cfg(feature = "l06")]
-            "06" => {
-                let objects = l04_quadrics_transforms::BruteForce::new(&scene.objects);
-                return drawn!(objects, |r: &Ray, hit: &raylab::Hit| shadowed(scene, &objects, r, hit));
-            }
+            "06" => return drawn(&brute, &|ray, hit| shadowed(scene, &brute, ray, hit)),
             #[cfg(feature = "l07")]
-            "07" => {
-                return drawn!(
-                    l04_quadrics_transforms::BruteForce::new(&scene.objects),
-                    |r: &Ray, hit: &raylab::Hit| { mirrored(scene, r, hit) }
-                );
-            }
+            "07" => return drawn(&brute, &|ray, hit| mirrored(scene, ray, hit)),
             #[cfg(feature = "l08")]
             "08" => return l08_ray_tree::render_scene(scene, &scene_settings(scene)).map(|(image, _)| image),
             #[cfg(feature = "l10")]
@@ -235,20 +203,29 @@ fn local(scene: &Scene, ray: &Ray, hit: &raylab::Hit) -> Color {
     )
 }
 
-/// Stage 06: 06's `shade_with_shadows` with the scene's shadow settings.
+/// The shadow settings `scene` asks for: its `[render]` table's
+/// `transparent_shadows` and `area_samples`, lecture 06's defaults for what it
+/// does not say. Stage 06 shades with them; the tracer's settings take them.
 #[cfg(feature = "l06")]
-fn shadowed(scene: &Scene, objects: &dyn raylab::Intersector, ray: &Ray, hit: &raylab::Hit) -> Color {
-    use l06_shadows::{ShadowMode, ShadowSettings, Surface};
-    let Some(material) = scene.materials.get(hit.material) else { return scene.background };
+pub fn shadow_settings(scene: &Scene) -> l06_shadows::ShadowSettings {
+    use l06_shadows::{ShadowMode, ShadowSettings};
     let defaults = ShadowSettings::default();
-    let settings = ShadowSettings {
+    ShadowSettings {
         mode: match scene.render.transparent_shadows {
             Some(true) => ShadowMode::Transmissive,
             Some(false) => ShadowMode::Opaque,
             None => defaults.mode,
         },
         area_samples: scene.render.area_samples.unwrap_or(defaults.area_samples),
-    };
+    }
+}
+
+/// Stage 06: 06's `shade_with_shadows` with the scene's shadow settings.
+#[cfg(feature = "l06")]
+fn shadowed(scene: &Scene, objects: &dyn raylab::Intersector, ray: &Ray, hit: &raylab::Hit) -> Color {
+    use l06_shadows::Surface;
+    let Some(material) = scene.materials.get(hit.material) else { return scene.background };
+    let settings = shadow_settings(scene);
     let surface = Surface {
         material,
         diffuse: material.diffuse,
@@ -291,20 +268,16 @@ fn mirrored(scene: &Scene, ray: &Ray, hit: &raylab::Hit) -> Color {
 
 /// The tracer's settings for `scene`: what its `[render]` table says, and
 /// [`l08_ray_tree::TraceSettings::default`] for what it does not (6.837 files
-/// say nothing).
+/// say nothing); the shadow settings are [`shadow_settings`]'s.
 #[cfg(feature = "l08")]
 pub fn scene_settings(scene: &Scene) -> l08_ray_tree::TraceSettings {
-    use l06_shadows::ShadowMode;
     let (own, default) = (scene.render, l08_ray_tree::TraceSettings::default());
+    let shadows = shadow_settings(scene);
     l08_ray_tree::TraceSettings {
         max_depth: own.max_depth.unwrap_or(default.max_depth),
         min_weight: own.min_weight.unwrap_or(default.min_weight),
-        shadow_mode: match own.transparent_shadows {
-            Some(true) => ShadowMode::Transmissive,
-            Some(false) => ShadowMode::Opaque,
-            None => default.shadow_mode,
-        },
-        area_samples: own.area_samples.unwrap_or(default.area_samples),
+        shadow_mode: shadows.mode,
+        area_samples: shadows.area_samples,
         ..default
     }
 }

@@ -100,11 +100,8 @@ pub fn check_view(
         ));
     }
     let scaled = |v: Vec3| v / v.abs().max_element();
-    let d = scaled(view);
-    if up == Vec3::ZERO
-        || !up.is_finite()
-        || scaled(up).cross(d).length() <= 1e-6 * scaled(up).length() * d.length()
-    {
+    let (d, u) = (scaled(view), scaled(up));
+    if up == Vec3::ZERO || !up.is_finite() || u.cross(d).length() <= 1e-6 * u.length() * d.length() {
         return Err(format!(
             "up {} is parallel to {shown} (or zero): the camera's roll is undefined",
             show(up)

@@ -24,6 +24,11 @@ fn wide(x: Float) -> f64 {
     f64::from(x)
 }
 
+/// A colour's largest component, in f64.
+fn m(c: crate::color::Color) -> f64 {
+    wide(c.max_element())
+}
+
 /// The renderer's default ray-tree depth (`depth` in SCENES.md).
 const DEFAULT_DEPTH: u32 = 5;
 
@@ -52,7 +57,6 @@ fn bound(scene: &Scene, replaced: Option<(Value, f64)>) -> f64 {
         Some((v, with)) if v == value => with,
         _ => own,
     };
-    let m = |c: crate::color::Color| wide(c.max_element());
     let materials = scene.materials.iter().enumerate();
     let diffuse = materials
         .clone()
@@ -127,7 +131,6 @@ pub fn check(scene: &Scene, words: Words) -> Result<(), String> {
     if total <= limit {
         return Ok(());
     }
-    let m = |c: crate::color::Color| wide(c.max_element());
     let mut values: Vec<(Value, f64)> =
         vec![(Value::Background, m(scene.background)), (Value::Ambient, m(scene.ambient))];
     values.extend(scene.lights.iter().enumerate().map(|(i, l)| (Value::Light(i), m(l.color))));
