@@ -253,6 +253,9 @@ fn hint(ws: &Workspace, select: &str) -> Result<bool, String> {
     Ok(true)
 }
 
+/// The exit status of a tool stopped by Ctrl-C (`raylab-checks render`): 128 + SIGINT.
+const INTERRUPTED: i32 = 130;
+
 /// Builds the checks with every lecture and runs one of its tools.
 fn forward(tool: &str, args: &[String]) -> Result<bool, String> {
     let ws = Workspace::open(&workspace::own_root())?;
@@ -282,10 +285,16 @@ fn forward(tool: &str, args: &[String]) -> Result<bool, String> {
             built.binary
         }
     };
+    // Ctrl-C reaches the tool too (one process group): the tool stops cleanly and says so, and
+    // this process waits for it instead of dying first, then exits as it did.
+    let _ = ctrlc::set_handler(|| {});
     let status = std::process::Command::new(&binary)
         .arg(tool)
         .args(args)
         .status()
         .map_err(|e| format!("could not run {}: {e}", binary.display()))?;
+    if status.code() == Some(INTERRUPTED) {
+        std::process::exit(INTERRUPTED);
+    }
     Ok(status.success())
 }

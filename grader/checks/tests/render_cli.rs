@@ -171,3 +171,29 @@ fn supersampling_the_receding_checker_brings_it_closer_to_the_converged_image() 
     eprintln!("mean absolute error against 256 spp: 1 spp {e1:.4}, 16 spp {e16:.4}");
     assert!(e16 < 0.5 * e1, "16 spp ({e16}) should at least halve the error of 1 spp ({e1})");
 }
+
+#[test]
+#[cfg(unix)]
+fn ctrl_c_stops_a_long_render_cleanly_without_writing_the_image() {
+    use std::io::Read;
+    let dir = temp_dir("interrupt");
+    let scene = write_scene(&dir);
+    let png = dir.join("out.png");
+    // 2000×2000 pixels × 64 eye rays: minutes of work, stopped after half a second.
+    let mut child = Command::new(env!("CARGO_BIN_EXE_raylab-checks"))
+        .args(["render", scene.to_str().unwrap(), "--size", "2000x2000", "--spp", "64", "--allow-large"])
+        .args(["-o", png.to_str().unwrap()])
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .expect("the grader runs");
+    std::thread::sleep(std::time::Duration::from_millis(500));
+    // SIGINT, as the terminal sends it on Ctrl-C.
+    let kill = Command::new("kill").args(["-INT", &child.id().to_string()]).status().expect("kill runs");
+    assert!(kill.success());
+    let status = child.wait().unwrap();
+    let mut stderr = String::new();
+    child.stderr.take().unwrap().read_to_string(&mut stderr).unwrap();
+    assert_eq!(status.code(), Some(130), "{status:?}: {stderr}");
+    assert!(stderr.contains(&format!("interrupted: the render was stopped, {} not written", png.display())), "{stderr}");
+    assert!(!png.exists());
+}

@@ -228,6 +228,21 @@ fn viewable(image: &raylab::Image, aov: Aov) -> raylab::Image {
     raylab::Image::from_pixels(image.width, image.height, pixels)
 }
 
+/// The exit status of a render stopped by Ctrl-C: 128 + SIGINT, as a shell reports it.
+pub const INTERRUPTED: i32 = 130;
+
+/// On Ctrl-C, stops the render at once with a line that says so and that
+/// `output` was not written (the image is written only when it is whole), and
+/// exits with [`INTERRUPTED`]; the progress bar's line is ended first.
+fn stop_on_ctrl_c(output: &std::path::Path) {
+    let output = output.display().to_string();
+    // Refused only when a handler is set already, which this process never does twice.
+    let _ = ctrlc::set_handler(move || {
+        eprintln!("\ninterrupted: the render was stopped, {output} not written");
+        std::process::exit(INTERRUPTED);
+    });
+}
+
 pub fn render(args: &RenderArgs) -> Result<(), String> {
     let mut scene = raylab::scene::load(&args.scene).map_err(|e| e.to_string())?;
     if let Some((w, h)) = args.size {
@@ -245,6 +260,7 @@ pub fn render(args: &RenderArgs) -> Result<(), String> {
             pixel.0, pixel.1, color.x, color.y, color.z
         );
     }
+    stop_on_ctrl_c(&args.output);
     let (image, stats) = shade::render_scene(&scene, args.aov, &settings, args.sampling(&scene))?;
     let write = match args.aov {
         Some(aov @ (Aov::Depth | Aov::Normal)) if is_png(&args.output) => {
