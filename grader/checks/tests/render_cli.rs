@@ -194,6 +194,9 @@ fn ctrl_c_stops_a_long_render_cleanly_without_writing_the_image() {
     let mut stderr = String::new();
     child.stderr.take().unwrap().read_to_string(&mut stderr).unwrap();
     assert_eq!(status.code(), Some(130), "{status:?}: {stderr}");
-    assert!(stderr.contains(&format!("interrupted: the render was stopped, {} not written", png.display())), "{stderr}");
+    assert!(
+        stderr.contains(&format!("interrupted: the render was stopped, {} not written", png.display())),
+        "{stderr}"
+    );
     assert!(!png.exists());
 }

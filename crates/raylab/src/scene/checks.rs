@@ -44,9 +44,21 @@ pub fn number(x: f64) -> String {
     }
 }
 
-/// A vector for messages: `[1, 0, -2.5]` (shortest round-trip digits).
+/// [`number`] for a `Float`: its own shortest digits (an f32's `1e-45`, not
+/// the `1.401298464324817e-45` of its widening to f64).
+pub fn float(x: Float) -> String {
+    if x == 0.0 || !x.is_finite() || (1e-4..1e15).contains(&x.abs()) {
+        format!("{x}")
+    } else {
+        format!("{x:e}")
+    }
+}
+
+/// A vector for messages: `[1, 0, -2.5]`, each component as [`float`] writes it
+/// (`[0, -1e19, 1e13]`, not forty digits).
 pub fn show(v: Vec3) -> String {
-    format!("[{}, {}, {}]", v.x, v.y, v.z)
+    let [x, y, z] = v.to_array().map(float);
+    format!("[{x}, {y}, {z}]")
 }
 
 /// `v / |v|`, or an error for a zero (or too tiny to normalise) vector.
@@ -103,7 +115,7 @@ pub fn check_view(
     let (d, u) = (scaled(view), scaled(up));
     if up == Vec3::ZERO || !up.is_finite() || u.cross(d).length() <= 1e-6 * u.length() * d.length() {
         return Err(format!(
-            "up {} is parallel to {shown} (or zero): the camera's roll is undefined",
+            "up {} is zero or parallel to {shown}, to within 10⁻⁶ radians: the camera's roll is undefined",
             show(up)
         ));
     }
@@ -118,6 +130,46 @@ pub fn check_view(
         return Err(format!("{shown} is lost beside eye {}: eye is too far from the origin", show(eye)));
     }
     Ok(Some(target))
+}
+
+/// A perspective camera's full vertical field of view `key` (`fovy`, 6.837's
+/// `angle`) of `degrees`, in radians: in (0, 180) degrees, and not so small
+/// that it rounds to 0 radians (5e-324 degrees in f64, 1e-45 in f32).
+pub fn field_of_view(degrees: Float, key: &str) -> Result<Float, String> {
+    if !(degrees > 0.0 && degrees < 180.0) {
+        return Err(format!("{key} must be in (0, 180) degrees, found {}", float(degrees)));
+    }
+    let radians = crate::math::radians(degrees);
+    if radians == 0.0 {
+        return Err(format!(
+            "{key} must be in (0, 180) degrees, found {}: too small, it is 0 in radians with {}-bit floats",
+            float(degrees),
+            8 * size_of::<Float>()
+        ));
+    }
+    Ok(radians)
+}
+
+/// The indices of refraction a material may have: real materials lie between
+/// 1 and about 4 (6.837's scenes use 1 to 4); below 10⁻² or above 10² the
+/// refraction formula's η = η_i/η_t and η² lose the refracted direction's
+/// digits (an index of 10³⁹ collapses it to zero; one of 10⁻³⁹ makes η
+/// infinite in f32; both found by the bad-scenes fuzz test).
+pub const IOR_RANGE: std::ops::RangeInclusive<Float> = 0.01..=100.0;
+
+/// A material's index of refraction `key` (`ior`, 6.837's `indexOfRefraction`)
+/// within [`IOR_RANGE`].
+pub fn index_of_refraction(ior: Float, key: &str) -> Result<Float, String> {
+    if IOR_RANGE.contains(&ior) {
+        Ok(ior)
+    } else {
+        Err(format!(
+            "{key} must be from {} to {} (real materials: 1 to about 4), found {}",
+            IOR_RANGE.start(),
+            IOR_RANGE.end(),
+            float(ior)
+        ))
+    }
 }
 
 /// How flat a triangle may be: its height over the longest edge at most this

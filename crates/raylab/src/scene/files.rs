@@ -22,10 +22,16 @@ pub const TEXTURE_LIMIT: u64 = 64 << 20;
 /// The bytes of the regular file at `path`, at most `limit` of them; `what`
 /// names the file's role in the error ("the mesh file").
 pub fn read_limited(path: &Path, limit: u64, what: &str) -> Result<Vec<u8>, String> {
+    let not_regular = || format!("{what} is not a regular file (a folder, a device or a pipe?)");
+    // Asked before opening: opening a named pipe waits, forever, for a writer.
+    let meta = std::fs::metadata(path).map_err(|e| format!("cannot read {what}: {e}"))?;
+    if !meta.is_file() {
+        return Err(not_regular());
+    }
     let file = std::fs::File::open(path).map_err(|e| format!("cannot read {what}: {e}"))?;
     let meta = file.metadata().map_err(|e| format!("cannot read {what}: {e}"))?;
     if !meta.is_file() {
-        return Err(format!("{what} is not a regular file (a folder or a device?)"));
+        return Err(not_regular());
     }
     let too_big = |size: String| {
         format!("{what} {} is {size}, more than the {} MiB a scene may read", path.display(), limit >> 20)
@@ -71,7 +77,13 @@ mod tests {
         #[cfg(unix)]
         {
             let said = read_limited(Path::new("/dev/zero"), MESH_LIMIT, "the mesh file").unwrap_err();
-            assert_eq!(said, "the mesh file is not a regular file (a folder or a device?)");
+            assert_eq!(said, "the mesh file is not a regular file (a folder, a device or a pipe?)");
+            // A named pipe with no writer: opening it would wait forever.
+            let fifo = temp_dir("files-fifo").join("pipe.obj");
+            let _ = std::fs::remove_file(&fifo);
+            assert!(std::process::Command::new("mkfifo").arg(&fifo).status().unwrap().success());
+            let said = read_limited(&fifo, MESH_LIMIT, "the mesh file").unwrap_err();
+            assert!(said.ends_with("is not a regular file (a folder, a device or a pipe?)"), "{said}");
         }
         let dir = temp_dir("files-limit");
         let path = dir.join("big.obj");

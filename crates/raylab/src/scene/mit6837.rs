@@ -354,12 +354,8 @@ impl<'a> Parser<'a> {
         let view = checks::check_view(eye, at, direction, up, checks::ViewWords::Mit6837);
         let at = self.at(&where_, view)?.unwrap_or(at);
         if perspective {
-            if !(extent > 0.0 && extent < 180.0) {
-                return Err(
-                    self.error(&at_extent, format!("angle must be in (0, 180) degrees, found {extent}"))
-                );
-            }
-            Ok(Camera::Perspective { eye, at, up, fovy: radians(extent) })
+            let fovy = checks::field_of_view(extent, "angle").map_err(|e| self.error(&at_extent, e))?;
+            Ok(Camera::Perspective { eye, at, up, fovy })
         } else {
             if extent <= 0.0 {
                 return Err(self.error(&at_extent, format!("size must be > 0, found {extent}")));
@@ -479,10 +475,8 @@ impl<'a> Parser<'a> {
         {
             return Err(self.error(&at, format!("exponent must be ≥ 0, found {e}")));
         }
-        if let Some((i, at)) = ior
-            && i <= 0.0
-        {
-            return Err(self.error(&at, format!("indexOfRefraction must be > 0, found {i}")));
+        if let Some((i, at)) = ior {
+            checks::index_of_refraction(i, "indexOfRefraction").map_err(|e| self.error(&at, e))?;
         }
         Ok(Material {
             name: format!("material {}", self.materials.len()),

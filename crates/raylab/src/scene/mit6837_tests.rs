@@ -312,7 +312,7 @@ fn camera_and_file_errors() {
     insta::assert_snapshot!(error("PerspectiveCamera { center 0 0 10 direction 0 0 -1 up 0 1 0 angle 180 }"),
         @"scenes/a.txt:1:67: angle must be in (0, 180) degrees, found 180");
     insta::assert_snapshot!(error("OrthographicCamera { center 0 0 10 direction 0 0 -1 up 0 0 1 size 5 }"),
-        @"scenes/a.txt:1:56: up [0, 0, 1] is parallel to direction [0, 0, -1] (or zero): the camera's roll is undefined");
+        @"scenes/a.txt:1:56: up [0, 0, 1] is zero or parallel to direction [0, 0, -1], to within 10⁻⁶ radians: the camera's roll is undefined");
     // In the format's words: a 6.837 camera has a direction, not an `at`.
     insta::assert_snapshot!(error("OrthographicCamera { center 0 0 10 direction 0 0 0 up 0 1 0 size 5 }"),
         @"scenes/a.txt:1:46: direction must be a non-zero vector, found [0, 0, 0]");

@@ -7,7 +7,9 @@
 //! The bound is an upper bound of what the Whitted tracer computes, in f64:
 //! a hit's local colour is at most L = Iₐ·k_d + Σ_lights I·A·(k_d + k_s), A
 //! the light's largest distance attenuation (1/constant; 1 where constant is
-//! 0, whose growth near the light the shading turns to 0 where it overflows);
+//! 0, whose growth near the light the shading turns to 0 where it overflows),
+//! times `area_samples` for an area light (its samples are summed before the
+//! sum is divided by their number);
 //! a ray's colour at most max(background, L)·(1 + g + g² + … + g^depth), g
 //! the largest k_r + k_t (the Fresnel split keeps the sum); a pixel sums its
 //! `spp` eye rays before dividing. Every maximum is over all materials and
@@ -31,6 +33,9 @@ fn m(c: crate::color::Color) -> f64 {
 
 /// The renderer's default ray-tree depth (`depth` in SCENES.md).
 const DEFAULT_DEPTH: u32 = 5;
+
+/// The renderer's default shadow rays per area light (`area_samples` in SCENES.md).
+const DEFAULT_AREA_SAMPLES: u32 = 16;
 
 /// One value of the scene the bound depends on.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -76,20 +81,23 @@ fn bound(scene: &Scene, replaced: Option<(Value, f64)>) -> f64 {
             get(Value::Reflective(i), m(mat.reflective)) + get(Value::Transparent(i), m(mat.transparent))
         })
         .fold(0.0, f64::max);
+    let area_samples = f64::from(scene.render.area_samples.unwrap_or(DEFAULT_AREA_SAMPLES));
     let lights: f64 = scene
         .lights
         .iter()
         .enumerate()
         .map(|(i, light)| {
-            let attenuation = match light.kind {
+            let (attenuation, samples) = match light.kind {
                 LightKind::Directional { .. } => return get(Value::Light(i), m(light.color)),
-                LightKind::Point { attenuation, .. }
-                | LightKind::Spot { attenuation, .. }
-                | LightKind::Rect { attenuation, .. }
-                | LightKind::Sphere { attenuation, .. } => attenuation,
+                LightKind::Point { attenuation, .. } | LightKind::Spot { attenuation, .. } => {
+                    (attenuation, 1.0)
+                }
+                LightKind::Rect { attenuation, .. } | LightKind::Sphere { attenuation, .. } => {
+                    (attenuation, area_samples)
+                }
             };
             let largest = if attenuation.constant > 0.0 { 1.0 / wide(attenuation.constant) } else { 1.0 };
-            get(Value::Light(i), m(light.color)) * largest
+            get(Value::Light(i), m(light.color)) * largest * samples
         })
         .sum();
     let local = get(Value::Ambient, m(scene.ambient)) * diffuse + lights * (diffuse + specular);
@@ -143,10 +151,16 @@ pub fn check(scene: &Scene, words: Words) -> Result<(), String> {
         ]);
     }
     values.sort_by(|a, b| b.1.total_cmp(&a.1));
+    let area = |l: &super::Light| matches!(l.kind, LightKind::Rect { .. } | LightKind::Sphere { .. });
     let settings = format!(
-        "depth {}, spp {}",
+        "depth {}, spp {}{}",
         scene.render.max_depth.unwrap_or(DEFAULT_DEPTH),
-        scene.render.samples_per_pixel.unwrap_or(1)
+        scene.render.samples_per_pixel.unwrap_or(1),
+        if scene.lights.iter().any(area) {
+            format!(", area_samples {}", scene.render.area_samples.unwrap_or(DEFAULT_AREA_SAMPLES))
+        } else {
+            String::new()
+        }
     );
     let range = format!("the range of {}-bit floats (±{:e})", 8 * size_of::<Float>(), Float::MAX);
     for &(value, own) in &values {

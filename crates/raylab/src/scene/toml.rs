@@ -199,11 +199,8 @@ impl Reader<'_> {
                 self.only("a perspective camera", &present, &["fovy"])?;
                 let fovy = self.need(&c.fovy, "fovy", "a perspective camera", &whole)?;
                 let degrees = self.float(fovy, "fovy")?;
-                if !(degrees > 0.0 && degrees < 180.0) {
-                    return Err(self
-                        .error(&fovy.span(), format!("fovy must be in (0, 180) degrees, found {degrees}")));
-                }
-                Ok(Camera::Perspective { eye, at, up, fovy: radians(degrees) })
+                let fovy = checks::field_of_view(degrees, "fovy").map_err(|e| self.error(&fovy.span(), e))?;
+                Ok(Camera::Perspective { eye, at, up, fovy })
             }
             "orthographic" => {
                 self.only("an orthographic camera", &present, &["height"])?;
@@ -385,10 +382,8 @@ impl Reader<'_> {
             };
             let ior = match &m.ior {
                 None => 1.0,
-                Some(i) => match self.float(i, "ior")? {
-                    i if i > 0.0 => i,
-                    x => return Err(self.error(&i.span(), format!("ior must be > 0, found {x}"))),
-                },
+                Some(i) => checks::index_of_refraction(self.float(i, "ior")?, "ior")
+                    .map_err(|e| self.error(&i.span(), e))?,
             };
             materials.push(Material {
                 diffuse: self.color(&m.diffuse, "diffuse", WHITE)?,

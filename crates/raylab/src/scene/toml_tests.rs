@@ -364,11 +364,24 @@ fn a_far_target_is_read_as_a_direction() {
 #[test]
 fn camera_errors() {
     insta::assert_snapshot!(error("[camera]\ntype = \"perspective\"\neye = [0, 0, 5]\nat = [0, 0, 0]\nup = [0, 0, 2]\nfovy = 40\n"),
-        @"scenes/a.toml:5:6: up [0, 0, 2] is parallel to the view direction at − eye = [0, 0, -5] (or zero): the camera's roll is undefined");
+        @"scenes/a.toml:5:6: up [0, 0, 2] is zero or parallel to the view direction at − eye = [0, 0, -5], to within 10⁻⁶ radians: the camera's roll is undefined");
     insta::assert_snapshot!(error("[camera]\ntype = \"perspective\"\neye = [1, 2, 3]\nat = [1, 2, 3]\nfovy = 40\n"),
         @"scenes/a.toml:4:6: at must differ from eye, both are [1, 2, 3]");
     insta::assert_snapshot!(error("[camera]\ntype = \"perspective\"\neye = [0, 0, 5]\nat = [0, 0, 0]\nfovy = 180\n"),
         @"scenes/a.toml:5:8: fovy must be in (0, 180) degrees, found 180");
+    // The smallest positive float: positive in degrees, 0 in radians (found by the bad-scenes
+    // fuzz test of `grader render`, where the f64 build's camera panicked on it).
+    let tiny = Float::from_bits(1);
+    let said = error(&format!(
+        "[camera]\ntype = \"perspective\"\neye = [0, 0, 5]\nat = [0, 0, 0]\nfovy = {tiny:e}\n"
+    ));
+    let bits = 8 * size_of::<Float>();
+    assert_eq!(
+        said,
+        format!(
+            "scenes/a.toml:5:8: fovy must be in (0, 180) degrees, found {tiny:e}: too small, it is 0 in radians with {bits}-bit floats"
+        )
+    );
     insta::assert_snapshot!(error("[camera]\ntype = \"orthographic\"\neye = [0, 0, 5]\nat = [0, 0, 0]\nfovy = 40\n"),
         @"scenes/a.toml:5:8: fovy is not a key of an orthographic camera (its keys: height)");
     insta::assert_snapshot!(error("[image]\nwidth = 320\n"), @"scenes/a.toml:1:1: the file needs a [camera] table");
@@ -427,6 +440,13 @@ fn light_material_image_and_syntax_errors() {
         @"scenes/a.toml:11:9: outer must satisfy inner ≤ outer < 90 degrees, found inner 10, outer 90");
     insta::assert_snapshot!(error(&format!("{CAMERA}[materials.m]\nmodel = \"cook-torrance\"\n")),
         @"scenes/a.toml:7:9: unknown specular model `cook-torrance`, expected blinn or phong");
+    // An index of refraction of 10³⁹ or 10⁻³⁹ loaded, then stopped the render (found by the
+    // bad-scenes fuzz test): refused beyond 10⁻² to 10².
+    insta::assert_snapshot!(error(&format!("{CAMERA}[materials.m]\nior = 1e-39\n")),
+        @"scenes/a.toml:7:7: ior must be from 0.01 to 100 (real materials: 1 to about 4), found 1e-39");
+    insta::assert_snapshot!(error(&format!("{CAMERA}[materials.m]\nior = 0\n")),
+        @"scenes/a.toml:7:7: ior must be from 0.01 to 100 (real materials: 1 to about 4), found 0");
+    assert!(parse(&format!("{CAMERA}[materials.m]\nior = 100\n")).is_ok());
     insta::assert_snapshot!(error(&format!("{CAMERA}[materials.m]\ndiffuse = [1, -1, 0]\n")),
         @"scenes/a.toml:7:11: diffuse components must be ≥ 0, found [1, -1, 0]");
     insta::assert_snapshot!(error(&format!("{CAMERA}[image]\nwidth = 0\n")),
@@ -614,12 +634,18 @@ fn files_that_are_not_utf8_or_endless_are_refused_with_where() {
     #[cfg(unix)]
     {
         let said = parse_toml(&object("/dev/zero"), &dir.join("a.toml")).unwrap_err().message;
-        assert!(said.ends_with("the mesh file is not a regular file (a folder or a device?)"), "{said}");
+        assert!(
+            said.ends_with("the mesh file is not a regular file (a folder, a device or a pipe?)"),
+            "{said}"
+        );
         // The same for an image texture.
         let texture =
             format!("{CAMERA}[materials.a]\ntexture = {{ type = \"image\", file = \"/dev/zero\" }}\n");
         let said = parse_toml(&texture, &dir.join("a.toml")).unwrap_err().message;
-        assert!(said.ends_with("the image file is not a regular file (a folder or a device?)"), "{said}");
+        assert!(
+            said.ends_with("the image file is not a regular file (a folder, a device or a pipe?)"),
+            "{said}"
+        );
     }
 }
 
@@ -657,4 +683,17 @@ fn colours_whose_products_overflow_are_refused_with_the_largest_accepted_value()
     let said = error(&text);
     assert!(said.starts_with("scenes/a.toml: materials.glass.transparent = "), "{said}");
     assert!(said.contains("the largest value it may have here is"), "{said}");
+    // An area light's samples are summed before they are averaged: a diffuse colour of MAX/4
+    // under a rect light overflows the sum of its 16 samples (found by the bad-scenes fuzz test
+    // of `grader render`, whose image came out NaN), and passes with 2 samples.
+    let rect = |samples: u32| {
+        format!(
+            "{CAMERA}[render]\narea_samples = {samples}\n[[lights]]\ntype = \"rect\"\ncorner = [0, 5, 0]\n\
+             edge_u = [1, 0, 0]\nedge_v = [0, 0, 1]\ncolor = [1, 1, 1]\n[materials.m]\ndiffuse = [{quarter:e}, 0, 0]\n"
+        )
+    };
+    let said = error(&rect(16));
+    assert!(said.starts_with("scenes/a.toml: materials.m.diffuse = "), "{said}");
+    assert!(said.contains("with depth 5, spp 1, area_samples 16, beyond"), "{said}");
+    assert!(parse(&rect(2)).is_ok());
 }

@@ -244,6 +244,12 @@ fn stop_on_ctrl_c(output: &std::path::Path) {
 }
 
 pub fn render(args: &RenderArgs) -> Result<(), String> {
+    stop_on_ctrl_c(&args.output);
+    render_to_file(args)
+}
+
+/// Loads, checks against the budget, renders and writes: `grader render` but Ctrl-C.
+pub(crate) fn render_to_file(args: &RenderArgs) -> Result<(), String> {
     let mut scene = raylab::scene::load(&args.scene).map_err(|e| e.to_string())?;
     if let Some((w, h)) = args.size {
         scene.width = w;
@@ -260,7 +266,6 @@ pub fn render(args: &RenderArgs) -> Result<(), String> {
             pixel.0, pixel.1, color.x, color.y, color.z
         );
     }
-    stop_on_ctrl_c(&args.output);
     let (image, stats) = shade::render_scene(&scene, args.aov, &settings, args.sampling(&scene))?;
     let write = match args.aov {
         Some(aov @ (Aov::Depth | Aov::Normal)) if is_png(&args.output) => {
