@@ -17,33 +17,37 @@ pub fn wide(v: Vec3) -> [f64; 3] {
 
 /// The roots t₀ ≤ t₁ of |o + t·d − c|² = r², accurate to about one f64
 /// rounding whatever the precision of `Float`: the inputs are widened to f64
-/// exactly, the geometric solution gives a first guess, and two Newton steps
-/// on g(t) = |o − c + t·d|² − r² whose residual is evaluated in double-double
-/// arithmetic (error-free products by fused multiply–add) polish it.
+/// exactly, and Newton's method on g(t) = |o − c + t·d|² − r², its residual
+/// evaluated in double-double arithmetic (error-free products by fused
+/// multiply–add), finds each root. No closed form, none of this lecture's
+/// three (§2.2–2.4): t_c = −(o − c)·d / d·d is the point of the line nearest
+/// the centre; when g(t_c) > 0 the line misses, else both roots lie within
+/// t_c ∓ r/|d|, where g ≥ 0. g is a convex parabola, so Newton's steps from
+/// those two ends move toward their roots and never past them (linearly, by
+/// halves, only where the roots nearly meet: at most ~60 steps).
 /// `None` when the line misses the sphere (in f64).
 pub fn sphere_roots_reference(origin: Vec3, dir: Vec3, center: Vec3, radius: Float) -> Option<(f64, f64)> {
     let (o, d, c, r) = (wide(origin), wide(dir), wide(center), to_f64(radius));
     let f = [o[0] - c[0], o[1] - c[1], o[2] - c[2]];
     let dot = |u: [f64; 3], v: [f64; 3]| u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
-    // First guess: the geometric solution in f64.
     let a = dot(d, d);
-    let t_ca = -dot(f, d) / a;
-    let closest = [f[0] + t_ca * d[0], f[1] + t_ca * d[1], f[2] + t_ca * d[2]];
-    let h2 = r * r - dot(closest, closest);
-    if h2 < 0.0 {
+    let t_c = -dot(f, d) / a;
+    if residual(f, d, r, t_c).0 > 0.0 {
         return None;
     }
-    let t_hc = (h2 / a).sqrt();
-    let polish = |mut t: f64| {
-        for _ in 0..2 {
+    let newton = |mut t: f64| {
+        for _ in 0..200 {
             let (g, slope) = residual(f, d, r, t);
-            if slope != 0.0 {
-                t -= g / slope;
+            let next = t - g / slope;
+            if g <= 0.0 || slope == 0.0 || next == t {
+                break;
             }
+            t = next;
         }
         t
     };
-    Some((polish(t_ca - t_hc), polish(t_ca + t_hc)))
+    let half = r / a.sqrt();
+    Some((newton(t_c - half), newton(t_c + half)))
 }
 
 /// g(t) = |f + t·d|² − r² in double-double arithmetic, and g'(t) = 2 d·(f + t·d).

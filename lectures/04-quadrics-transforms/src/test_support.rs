@@ -52,12 +52,46 @@ pub fn rotate(v: [f64; 3], axis: [f64; 3], angle: f64) -> [f64; 3] {
     [0, 1, 2].map(|i| v[i] * c + kxv[i] * s + axis[i] * kv * (1.0 - c))
 }
 
+/// The roots t₀ ≤ t₁ of |u + t·v|² = 1 (the unit sphere at the origin), in
+/// f64, by Newton's method: no closed form, the quadratic formulas being
+/// lecture 02's exercises. t_c = −u·v / v·v is the point of the line nearest
+/// the centre; when g(t_c) > 0, g(t) = |u + t·v|² − 1, the line misses, else
+/// both roots lie within t_c ∓ 1/|v|, where g ≥ 0. g is a convex parabola,
+/// so Newton's steps from those two ends move toward their roots and never
+/// past them (by halves, at worst, where the roots nearly meet: ≤ ~60 steps).
+/// p = u + t·v is formed directly, so a root is as accurate as the line's
+/// conditioning allows (an error of about ε·|u|/|v| in t).
+pub fn unit_sphere_roots(u: [f64; 3], v: [f64; 3]) -> Option<(f64, f64)> {
+    let g = |t: f64| {
+        let p = [0, 1, 2].map(|i| u[i] + t * v[i]);
+        (dot(p, p) - 1.0, 2.0 * dot(p, v))
+    };
+    let a = dot(v, v);
+    let t_c = -dot(u, v) / a;
+    if g(t_c).0 > 0.0 {
+        return None;
+    }
+    let newton = |mut t: f64| {
+        for _ in 0..200 {
+            let (value, slope) = g(t);
+            let next = t - value / slope;
+            if value <= 0.0 || slope == 0.0 || next == t {
+                break;
+            }
+            t = next;
+        }
+        t
+    };
+    let half = 1.0 / a.sqrt();
+    Some((newton(t_c - half), newton(t_c + half)))
+}
+
 /// An ellipsoid solved directly in world space, in f64: centre `center`,
 /// semi-axes `semi` along the coordinate axes turned by `angle` about the
 /// unit `axis`, i.e. Σ (uᵢ/sᵢ)² = 1 with u = R⁻¹(p − center). Returns the
 /// first t > 0 of the ray and the unit outward normal there, the gradient
-/// R·(u_x/a², u_y/b², u_z/c²). Stable roots and the discriminant
-/// a − |u₀ × v|² (Lagrange) keep f64 well ahead of the `Float` code.
+/// R·(u_x/a², u_y/b², u_z/c²). The roots by [`unit_sphere_roots`], in f64,
+/// well ahead of the `Float` code.
 pub fn ellipsoid_f64(
     origin: [f64; 3],
     dir: [f64; 3],
@@ -70,36 +104,19 @@ pub fn ellipsoid_f64(
     let u0 = to_local([0, 1, 2].map(|i| origin[i] - center[i]));
     let v = to_local(dir);
     let (u0, v) = ([0, 1, 2].map(|i| u0[i] / semi[i]), [0, 1, 2].map(|i| v[i] / semi[i]));
-    let (a, b, c) = (dot(v, v), dot(u0, v), dot(u0, u0) - 1.0);
-    let m = cross(u0, v);
-    let disc = a - dot(m, m);
-    if disc < 0.0 {
-        return None;
-    }
-    let q = -(b + disc.sqrt().copysign(b));
-    let (t0, t1) = (q / a, c / q);
-    let t = [t0.min(t1), t0.max(t1)].into_iter().find(|&t| t > 0.0)?;
+    let (t0, t1) = unit_sphere_roots(u0, v)?;
+    let t = [t0, t1].into_iter().find(|&t| t > 0.0)?;
     let gradient = [0, 1, 2].map(|i| (u0[i] + t * v[i]) / semi[i]);
     Some((t, unit(rotate(gradient, axis, angle))))
 }
 
 /// A unit sphere at the origin, written independently of lecture 02 so that
-/// these tests check the transform machinery alone: stable roots of
-/// |o + t d|² = 1 with the discriminant a − |o × d|² (Lagrange's identity; it
-/// keeps its digits when a squashing transform puts the object-space origin
-/// a thousand radii away), outward normal = the hit point.
+/// these tests check the transform machinery alone: the roots of
+/// [`unit_sphere_roots`] (in f64, rounded to `Float`), outward normal = the
+/// hit point.
 pub fn unit_sphere(ray: &Ray, range: Interval) -> Option<Hit> {
-    let (o, d) = (ray.origin, ray.dir);
-    let a = d.dot(d);
-    let b = o.dot(d);
-    let c = o.dot(o) - 1.0;
-    let disc = a - o.cross(d).length_squared();
-    if disc < 0.0 {
-        return None;
-    }
-    let q = -(b + disc.sqrt().copysign(b));
-    let (t0, t1) = if q == 0.0 { (0.0, 0.0) } else { (q / a, c / q) };
-    let t = [t0.min(t1), t0.max(t1)].into_iter().find(|&t| range.contains(t))?;
+    let (t0, t1) = unit_sphere_roots(d3(ray.origin), d3(ray.dir))?;
+    let t = [t0, t1].into_iter().map(|t| t as Float).find(|&t| range.contains(t))?;
     Some(Hit::new(ray, t, ray.at(t)))
 }
 
