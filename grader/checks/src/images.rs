@@ -283,7 +283,11 @@ fn geometry_difference(file: &SceneFile, scene: &Scene) -> Result<Option<Failure
         let (x, y) = depth_off.1;
         return Ok(Some(fail(
             &case,
-            format!("depth {:.4} at pixel ({x}, {y})", depth_ref.get(x, y).x),
+            format!(
+                "depth {:.4} at pixel ({x}, {y}) (± {} %)",
+                depth_ref.get(x, y).x,
+                100.0 * DEPTH_RELATIVE_TOLERANCE
+            ),
             format!("{:.4} ({} pixels off by more than 0.1 %)", depth.get(x, y).x, depth_off.0),
             "the right objects at the wrong distance: t must be in units of the ray's dir (depth = t·|d|), \
              and a transformed object's t must not come from a renormalised object-space direction",

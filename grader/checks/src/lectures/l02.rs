@@ -238,7 +238,7 @@ mod code {
         ensure(
             h.object == 1 && (h.t - 4.0).abs() <= TOL,
             case,
-            "object 1 at t = 4",
+            format!("object 1 at t = 4 (± {TOL:.1e})"),
             show(&got),
             "keep the nearest hit: shrink the range's max to each hit's t, and set hit.object to the index",
         )?;

@@ -1047,7 +1047,7 @@ mod code {
             ensure(
                 (h.t as f64 - t).abs() <= 16.0 * Float::EPSILON as f64 * t,
                 &case,
-                format!("t = {t:.7}"),
+                format!("t = {t:.7} (± 16ε·t = {:.1e})", 16.0 * Float::EPSILON as f64 * t),
                 num(h.t),
                 WORLD_T,
             )?;

@@ -149,7 +149,7 @@ mod code {
                 ensure(
                     (opposite + d).length() <= 8.0 * EPS,
                     &case,
-                    format!("disk(1 − u) = −disk(u) = {}", v2(-d)),
+                    format!("disk(1 − u) = −disk(u) = {} (± 8ε = {:.1e} in length)", v2(-d), 8.0 * EPS),
                     v2(opposite),
                     "the map is odd: u and 1 − u go to opposite points (φ = (π/4)·a_y/aₓ keeps the sign of r)",
                 )?;
@@ -177,7 +177,8 @@ mod code {
         for (u, expected, cause) in cases {
             let d = disk(u);
             let case = format!("u = {}", v2(u));
-            ensure((d - expected).abs().max_element() <= 4.0 * EPS, case, v2(expected), v2(d), cause)?;
+            let shown = format!("{} (± 4ε = {:.1e} each)", v2(expected), 4.0 * EPS);
+            ensure((d - expected).abs().max_element() <= 4.0 * EPS, case, shown, v2(d), cause)?;
         }
         Ok(format!("{} cases", 1 + 17 * 17 + cases.len()))
     }

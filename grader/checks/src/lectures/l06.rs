@@ -236,8 +236,11 @@ mod code {
         let sideways = (step - along * n).abs().max_element();
         let m = p.abs().max_element().max(from.abs().max_element());
         let in_ulp = step.abs().max_element() / ulp(m);
-        let expected =
-            format!("p moved along {}·n by 4 to 97 ulp of {}", if side > 0.0 { "+" } else { "−" }, num(m));
+        let expected = format!(
+            "p moved along {}·n by 4 to 97 ulp of {}, at most 2 ulp sideways",
+            if side > 0.0 { "+" } else { "−" },
+            num(m)
+        );
         let got = format!("{} ({} ulp, {} along n)", vec3(moved), num(in_ulp), num(along));
         ensure(
             moved != p,
@@ -330,7 +333,7 @@ mod code {
         ensure(
             moved.y > 0.0 && moved.y <= 1e-30 && moved.x == 0.0 && moved.z == 0.0,
             case,
-            "(0, tiny > 0, 0)",
+            "(0, y, 0) with 0 < y ≤ 1e-30",
             vec3(moved),
             "add a floor (the smallest normal float) so the point moves even when p = from = 0",
         )?;
@@ -929,7 +932,7 @@ mod code {
             samples.len() == 4
                 && samples.iter().zip(&expected).all(|(a, b)| (*a - *b).abs().max_element() <= 2.0 * EPS),
             "n = 4 from Rng::new(9): the order of the samples and of the draws",
-            show(&expected),
+            format!("{} (± 2ε each)", show(&expected)),
             show(&samples),
             "row by row (j outer, i inner), each cell drawing ξ₁ for x then ξ₂ for y, from the generator given",
         )?;
@@ -1003,7 +1006,7 @@ mod code {
         ensure(
             (c - Color::splat(expected)).abs().max_element() <= tolerance && rays == 8,
             case,
-            format!("{} with 8 shadow rays", num(expected)),
+            format!("{} (± {tolerance:.1e}) with 8 shadow rays", num(expected)),
             format!("{} with {rays} shadow rays", vec3(c)),
             cause,
         )?;

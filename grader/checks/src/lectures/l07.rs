@@ -529,7 +529,7 @@ mod code {
                     ensure(
                         t.is_finite() && (t.length() - 1.0).abs() <= 8.0 * EPS,
                         case,
-                        "a finite unit t, or None",
+                        format!("a finite t of length 1 (± 8ε = {:.1e}), or None", 8.0 * EPS),
                         vec3(t),
                         "clamp cos θ_i = −i·n to [0, 1] first: rounding takes it past the ends",
                     )?;

@@ -242,7 +242,7 @@ mod code {
         ensure(
             color == BACKGROUND && counted == rays(0, 0, 0),
             case,
-            format!("{}, {}", vec3(BACKGROUND), rays(0, 0, 0)),
+            format!("{} exactly, {}", vec3(BACKGROUND), rays(0, 0, 0)),
             format!("{}, {counted}", vec3(color)),
             "a ray that hits nothing sees scene.background and spawns nothing",
         )?;
@@ -259,7 +259,7 @@ mod code {
             if counted.reflected == 0 {
                 return Err(fail(
                     case,
-                    format!("{}, {}", vec3(kr * wall), rays(1, 0, 1)),
+                    format!("{} (± {COLOR_TOL:.1e} each), {}", vec3(kr * wall), rays(1, 0, 1)),
                     format!("{}, {counted}", vec3(color)),
                     "spawn a mirror ray when k_r ≠ 0 and its weight w·max(k_r) ≥ settings.min_weight",
                 ));
@@ -267,7 +267,7 @@ mod code {
             if kr != 1.0 && near(color, wall, COLOR_TOL) {
                 return Err(fail(
                     case,
-                    vec3(kr * wall),
+                    format!("{} (± {COLOR_TOL:.1e} each)", vec3(kr * wall)),
                     vec3(color),
                     "weight what the mirror ray sees by k_r: I += k_r ⊙ trace(mirror ray)",
                 ));
@@ -359,7 +359,7 @@ mod code {
         ensure(
             counted == rays(0, 0, 0) && near(color, Color::splat(0.1), COLOR_TOL),
             "facing mirrors with k_r = 0 (black), min_weight 0",
-            format!("{}, {}", vec3(Color::splat(0.1)), rays(0, 0, 0)),
+            format!("{} (± {COLOR_TOL:.1e} each), {}", vec3(Color::splat(0.1)), rays(0, 0, 0)),
             format!("{}, {counted}", vec3(color)),
             "a child of weight 0 adds nothing: spawn it only when w·max(k) > 0",
         )?;
@@ -378,7 +378,7 @@ mod code {
             if counted.refracted > 0 {
                 return Err(fail(
                     case,
-                    format!("{}, {}", vec3(tile), rays(1, 0, 0)),
+                    format!("{} (± {COLOR_TOL:.1e} each), {}", vec3(tile), rays(1, 0, 0)),
                     format!("{}, {counted}", vec3(color)),
                     "leaving the glass η = η_i/η_t = 1.5/1, from 07's interface(hit, ior) (back face): at 60° \
                      that is total internal reflection",
@@ -387,7 +387,7 @@ mod code {
             if counted.reflected == 0 {
                 return Err(fail(
                     case,
-                    format!("{}, {}", vec3(tile), rays(1, 0, 0)),
+                    format!("{} (± {COLOR_TOL:.1e} each), {}", vec3(tile), rays(1, 0, 0)),
                     format!("{}, {counted}", vec3(color)),
                     "under total internal reflection refract gives None: all of k_t goes to the mirror ray \
                      (k_r' = k_r + k_t)",
@@ -408,7 +408,7 @@ mod code {
         ensure(
             counted == rays(0, 1, 0) && near(color, v(1.0, 0.0, 1.0), COLOR_TOL),
             case,
-            format!("{}, {}", vec3(v(1.0, 0.0, 1.0)), rays(0, 1, 0)),
+            format!("{} (± {COLOR_TOL:.1e} each), {}", vec3(v(1.0, 0.0, 1.0)), rays(0, 1, 0)),
             format!("{}, {counted}", vec3(color)),
             "below the critical angle the transmitted ray (07's refract with interface's η) leaves the glass",
         )?;
@@ -435,7 +435,7 @@ mod code {
         ensure(
             counted == rays(0, 1, 0) && near(color, tile, COLOR_TOL),
             case,
-            format!("{}, {}", vec3(tile), rays(0, 1, 0)),
+            format!("{} (± {COLOR_TOL:.1e} each), {}", vec3(tile), rays(0, 1, 0)),
             format!("{}, {counted}", vec3(color)),
             "without settings.fresnel, R = 0: clear glass spawns one transmitted ray of weight k_t",
         )?;
@@ -445,7 +445,7 @@ mod code {
         ensure(
             counted == rays(1, 1, 0) && near(color, expected, COLOR_TOL),
             case,
-            format!("{}, {}", vec3(expected), rays(1, 1, 0)),
+            format!("{} (± {COLOR_TOL:.1e} each), {}", vec3(expected), rays(1, 1, 0)),
             format!("{}, {counted}", vec3(color)),
             "with settings.fresnel, R = fresnel_dielectric(−d·N, η_i, η_t): k_r' = k_r + R·k_t, k_t' = (1 − R)·k_t",
         )?;
@@ -488,7 +488,7 @@ mod code {
                 if counted.refracted < 2 {
                     return Err(fail(
                         case,
-                        format!("{}, {}", vec3(expected), rays(0, 2, 0)),
+                        format!("{} (± {COLOR_TOL:.1e} each), {}", vec3(expected), rays(0, 2, 0)),
                         format!("{}, {counted}", vec3(color)),
                         "the ray inside missed the exit: start refracted rays at 06's offset_origin(p, N, t, \
                          ray.origin) and search (0, ∞), no fixed epsilon (10⁻⁴ jumps across a ball of radius \
@@ -498,7 +498,7 @@ mod code {
                 ensure(
                     counted == rays(0, 2, 0) && near(color, expected, COLOR_TOL),
                     case,
-                    format!("{}, {}", vec3(expected), rays(0, 2, 0)),
+                    format!("{} (± {COLOR_TOL:.1e} each), {}", vec3(expected), rays(0, 2, 0)),
                     format!("{}, {counted}", vec3(color)),
                     "after the exit the ray meets the wall: the ray inside must leave the ball where it \
                      exits, not bounce inside it",

@@ -135,7 +135,7 @@ mod code {
             ensure(
                 (got.y - v).abs() <= 2.0 * EPS && (0.0..=1.0).contains(&got.x),
                 format!("the {name}"),
-                format!("v = {v}, u in [0, 1]"),
+                format!("v = {v} (± 2ε = {:.1e}), u in [0, 1]", 2.0 * EPS),
                 show2(got),
                 cause,
             )?;
@@ -165,7 +165,7 @@ mod code {
         ensure(
             got.is_finite() && got.y.abs() <= 2.0 * EPS,
             "the south pole one ulp outside the sphere, (0, −1 − ε, 0)",
-            "v = 0, finite",
+            format!("v = 0 (± 2ε = {:.1e}), finite", 2.0 * EPS),
             show2(got),
             "use atan2(y, √(x² + z²)) for the latitude, not acos(y): a point a rounding off the sphere makes \
              acos (or asin) NaN",
