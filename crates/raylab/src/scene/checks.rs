@@ -37,7 +37,13 @@ pub fn finite_words(found: &[f64]) -> String {
 /// A number for messages: shortest round-trip digits, in exponent form when
 /// very large or small (`1e39`, not forty digits).
 pub fn number(x: f64) -> String {
-    if x == 0.0 || !x.is_finite() || (1e-4..1e15).contains(&x.abs()) {
+    digits(x, x)
+}
+
+/// `x` in shortest round-trip digits, in exponent form when `magnitude` (x in
+/// f64) is 0 < |x| < 10⁻⁴ or |x| ≥ 10¹⁵.
+fn digits(x: impl std::fmt::Display + std::fmt::LowerExp, magnitude: f64) -> String {
+    if magnitude == 0.0 || !magnitude.is_finite() || (1e-4..1e15).contains(&magnitude.abs()) {
         format!("{x}")
     } else {
         format!("{x:e}")
@@ -46,12 +52,9 @@ pub fn number(x: f64) -> String {
 
 /// [`number`] for a `Float`: its own shortest digits (an f32's `1e-45`, not
 /// the `1.401298464324817e-45` of its widening to f64).
+#[allow(clippy::useless_conversion, reason = "Float is f64 with the kit's f64 feature")]
 pub fn float(x: Float) -> String {
-    if x == 0.0 || !x.is_finite() || (1e-4..1e15).contains(&x.abs()) {
-        format!("{x}")
-    } else {
-        format!("{x:e}")
-    }
+    digits(x, f64::from(x))
 }
 
 /// A vector for messages: `[1, 0, -2.5]`, each component as [`float`] writes it

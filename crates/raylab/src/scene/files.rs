@@ -22,17 +22,13 @@ pub const TEXTURE_LIMIT: u64 = 64 << 20;
 /// The bytes of the regular file at `path`, at most `limit` of them; `what`
 /// names the file's role in the error ("the mesh file").
 pub fn read_limited(path: &Path, limit: u64, what: &str) -> Result<Vec<u8>, String> {
-    let not_regular = || format!("{what} is not a regular file (a folder, a device or a pipe?)");
-    // Asked before opening: opening a named pipe waits, forever, for a writer.
+    // Asked of the path before opening it: opening a named pipe waits, forever, for a writer.
     let meta = std::fs::metadata(path).map_err(|e| format!("cannot read {what}: {e}"))?;
     if !meta.is_file() {
-        return Err(not_regular());
+        return Err(format!("{what} is not a regular file (a folder, a device or a pipe?)"));
     }
+    // Should the path name something else by now, the bounded read below still stops.
     let file = std::fs::File::open(path).map_err(|e| format!("cannot read {what}: {e}"))?;
-    let meta = file.metadata().map_err(|e| format!("cannot read {what}: {e}"))?;
-    if !meta.is_file() {
-        return Err(not_regular());
-    }
     let too_big = |size: String| {
         format!("{what} {} is {size}, more than the {} MiB a scene may read", path.display(), limit >> 20)
     };

@@ -120,6 +120,13 @@ pub enum LightKind {
     Sphere { center: Vec3, radius: Float, attenuation: Attenuation },
 }
 
+impl LightKind {
+    /// A rect or sphere light: sampled by `area_samples` shadow rays.
+    pub fn is_area(&self) -> bool {
+        matches!(self, Self::Rect { .. } | Self::Sphere { .. })
+    }
+}
+
 /// Distance attenuation 1 / (constant + linear·d + quadratic·d²) of point,
 /// spot and area lights; the default (1, 0, 0) is no attenuation.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -37,6 +37,11 @@ const DEFAULT_DEPTH: u32 = 5;
 /// The renderer's default shadow rays per area light (`area_samples` in SCENES.md).
 const DEFAULT_AREA_SAMPLES: u32 = 16;
 
+/// The scene's `area_samples`, else the renderer's default.
+fn area_samples(scene: &Scene) -> u32 {
+    scene.render.area_samples.unwrap_or(DEFAULT_AREA_SAMPLES)
+}
+
 /// One value of the scene the bound depends on.
 #[derive(Clone, Copy, Debug, PartialEq)]
 enum Value {
@@ -81,21 +86,20 @@ fn bound(scene: &Scene, replaced: Option<(Value, f64)>) -> f64 {
             get(Value::Reflective(i), m(mat.reflective)) + get(Value::Transparent(i), m(mat.transparent))
         })
         .fold(0.0, f64::max);
-    let area_samples = f64::from(scene.render.area_samples.unwrap_or(DEFAULT_AREA_SAMPLES));
+    let area_samples = f64::from(area_samples(scene));
     let lights: f64 = scene
         .lights
         .iter()
         .enumerate()
         .map(|(i, light)| {
-            let (attenuation, samples) = match light.kind {
+            let attenuation = match light.kind {
                 LightKind::Directional { .. } => return get(Value::Light(i), m(light.color)),
-                LightKind::Point { attenuation, .. } | LightKind::Spot { attenuation, .. } => {
-                    (attenuation, 1.0)
-                }
-                LightKind::Rect { attenuation, .. } | LightKind::Sphere { attenuation, .. } => {
-                    (attenuation, area_samples)
-                }
+                LightKind::Point { attenuation, .. }
+                | LightKind::Spot { attenuation, .. }
+                | LightKind::Rect { attenuation, .. }
+                | LightKind::Sphere { attenuation, .. } => attenuation,
             };
+            let samples = if light.kind.is_area() { area_samples } else { 1.0 };
             let largest = if attenuation.constant > 0.0 { 1.0 / wide(attenuation.constant) } else { 1.0 };
             get(Value::Light(i), m(light.color)) * largest * samples
         })
@@ -151,13 +155,12 @@ pub fn check(scene: &Scene, words: Words) -> Result<(), String> {
         ]);
     }
     values.sort_by(|a, b| b.1.total_cmp(&a.1));
-    let area = |l: &super::Light| matches!(l.kind, LightKind::Rect { .. } | LightKind::Sphere { .. });
     let settings = format!(
         "depth {}, spp {}{}",
         scene.render.max_depth.unwrap_or(DEFAULT_DEPTH),
         scene.render.samples_per_pixel.unwrap_or(1),
-        if scene.lights.iter().any(area) {
-            format!(", area_samples {}", scene.render.area_samples.unwrap_or(DEFAULT_AREA_SAMPLES))
+        if scene.lights.iter().any(|l| l.kind.is_area()) {
+            format!(", area_samples {}", area_samples(scene))
         } else {
             String::new()
         }

@@ -86,7 +86,6 @@ pub const IMAGE_BUDGET: f64 = (1u64 << 30) as f64;
 /// × (1 + the shadow rays of a shaded point: one per light, `area_samples`
 /// per area light). An AOV casts the eye rays only.
 pub fn ray_bound(scene: &Scene, settings: &TraceSettings, sampling: Sampling, aov: Option<Aov>) -> f64 {
-    use raylab::scene::LightKind;
     let eye = scene.width as f64 * scene.height as f64 * sampling.spp as f64;
     if aov.is_some() {
         return eye;
@@ -96,11 +95,7 @@ pub fn ray_bound(scene: &Scene, settings: &TraceSettings, sampling: Sampling, ao
     let branching = f64::from(u8::from(reflects) + u8::from(transmits));
     let nodes: f64 = (0..=settings.max_depth.min(64)).map(|k| branching.powi(k as i32)).sum();
     let shadow: f64 = if settings.shadows {
-        let per_light = |kind: &LightKind| match kind {
-            LightKind::Rect { .. } | LightKind::Sphere { .. } => settings.area_samples as f64,
-            _ => 1.0,
-        };
-        scene.lights.iter().map(|l| per_light(&l.kind)).sum()
+        scene.lights.iter().map(|l| if l.kind.is_area() { settings.area_samples as f64 } else { 1.0 }).sum()
     } else {
         0.0
     };
