@@ -199,7 +199,13 @@ fn the_handout_compiles_and_scores_zero_without_a_crash() {
     );
     assert_eq!(grade["progress"]["passed"], 0);
     // Every lecture has exercises marked not started, so the table tells a student where to begin.
-    for lecture in ["01", "02", "03", "04", "05", "06", "07", "08", "09", "10"] {
+    let mut lectures: Vec<String> = std::fs::read_dir(dir.join("lectures"))
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy()[..2].to_owned())
+        .collect();
+    lectures.sort();
+    assert_eq!(lectures.first().map(String::as_str), Some("01"), "{lectures:?}");
+    for lecture in lectures {
         assert!(
             checks(&grade).iter().any(|c| c["info"]["lecture"] == lecture && c["status"] == "not_started"),
             "lecture {lecture} has no check marked not started"
@@ -599,8 +605,13 @@ fn the_gradescope_bundle_has_its_scripts_and_the_pristine_workspace() {
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     for script in ["setup.sh", "run_autograder"] {
         let path = dir.join(script);
-        let mode = std::os::unix::fs::PermissionsExt::mode(&std::fs::metadata(&path).unwrap().permissions());
-        assert_eq!(mode & 0o111, 0o111, "{script} is not executable");
+        // Gradescope runs the bundle on Linux; Windows has no execute bit to check.
+        #[cfg(unix)]
+        {
+            let mode =
+                std::os::unix::fs::PermissionsExt::mode(&std::fs::metadata(&path).unwrap().permissions());
+            assert_eq!(mode & 0o111, 0o111, "{script} is not executable");
+        }
         let syntax = Command::new("bash").arg("-n").arg(&path).output().unwrap();
         assert!(syntax.status.success(), "{script}: {}", String::from_utf8_lossy(&syntax.stderr));
     }

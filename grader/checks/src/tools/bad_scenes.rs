@@ -380,6 +380,23 @@ fn far_and_near_cameras(dir: &Path, tally: &mut Tally) {
     }
 }
 
+/// Endless devices and a named pipe: Unix has them at known paths.
+#[cfg(unix)]
+fn special_files(dir: &Path) -> Vec<PathBuf> {
+    let fifo = dir.join("pipe.obj");
+    let _ = std::fs::remove_file(&fifo);
+    assert!(std::process::Command::new("mkfifo").arg(&fifo).status().unwrap().success());
+    let mut paths = ["/dev/zero", "/dev/urandom", "/dev/null"].map(PathBuf::from).to_vec();
+    paths.push(fifo);
+    paths
+}
+
+/// Windows' devices are not files a path test reaches the same way; the other cases stand.
+#[cfg(not(unix))]
+fn special_files(_dir: &Path) -> Vec<PathBuf> {
+    Vec::new()
+}
+
 /// Category 4: a mesh, a texture and the scene itself named by paths that are
 /// endless, huge, pipes, folders, missing or empty.
 fn endless_and_huge_files(dir: &Path, tally: &mut Tally) {
@@ -389,14 +406,7 @@ fn endless_and_huge_files(dir: &Path, tally: &mut Tally) {
     let empty = dir.join("empty.obj");
     std::fs::write(&empty, "").unwrap();
     let mut paths = vec![huge.clone(), empty, dir.to_path_buf(), dir.join("missing.obj")];
-    #[cfg(unix)]
-    {
-        paths.extend(["/dev/zero", "/dev/urandom", "/dev/null"].map(PathBuf::from));
-        let fifo = dir.join("pipe.obj");
-        let _ = std::fs::remove_file(&fifo);
-        assert!(std::process::Command::new("mkfifo").arg(&fifo).status().unwrap().success());
-        paths.push(fifo);
-    }
+    paths.extend(special_files(dir));
     let camera = "[camera]\ntype = \"perspective\"\neye = [0, 0, 5]\nat = [0, 0, 0]\nfovy = 40\n";
     let six = "PerspectiveCamera { center 0 0 5 direction 0 0 -1 up 0 1 0 angle 40 }\n\
                Background { color 0 0 0 }\nMaterials { numMaterials 1 Material { diffuseColor 1 1 1 } }\n";
