@@ -8,11 +8,12 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 data=../shared/data/mit6837
-hot=$(sed -n 's/^\[profile\.dev\.package\.\([^]*"]*\)\]$/\1/p' Cargo.toml)
-plain=()
-for p in $hot; do plain+=(--config "profile.dev.package.\"$p\".opt-level=0"); done
+# The packages Cargo.toml names in its dev profile (not "*"): at their own levels in "hot".
+named=$(sed -n 's/^\[profile\.dev\.package\.\([^]*"]*\)\]$/\1/p' Cargo.toml)
+plain=(--config 'profile.dev.opt-level=0')
+for p in $named; do plain+=(--config "profile.dev.package.\"$p\".opt-level=0"); done
 all=(--config 'profile.dev.opt-level=2' --config 'profile.dev.package."*".opt-level=2')
-for p in $hot; do all+=(--config "profile.dev.package.\"$p\".opt-level=2"); done
+for p in $named; do all+=(--config "profile.dev.package.\"$p\".opt-level=2"); done
 
 run() {
   local name=$1; shift

@@ -17,6 +17,9 @@ mod progress;
 mod report;
 mod run;
 mod submission;
+// INSTRUCTOR BEGIN
+mod sync;
+// INSTRUCTOR END
 mod verdict;
 mod watch;
 mod workspace;
@@ -128,7 +131,27 @@ enum Cmd {
         #[arg(trailing_var_arg = true, allow_hyphen_values = true)]
         args: Vec<String>,
     },
+    // INSTRUCTOR BEGIN
+    /// The course's maintenance (instructors).
+    Dev {
+        #[command(subcommand)]
+        command: DevCmd,
+    },
+    // INSTRUCTOR END
 }
+
+// INSTRUCTOR BEGIN
+#[derive(Subcommand)]
+enum DevCmd {
+    /// Rewrite the lists of lectures that Cargo and mdBook cannot read from the lectures'
+    /// Cargo.toml (features, dependencies, SUMMARY.md, the tables of the README and the book).
+    Sync {
+        /// Change nothing; fail naming every stale list.
+        #[arg(long)]
+        check: bool,
+    },
+}
+// INSTRUCTOR END
 
 /// The precision and profile this grader was built with, which the checks
 /// are built with too: `cargo run -p grader --features raylab/f64` grades in f64.
@@ -160,6 +183,9 @@ fn main() -> ExitCode {
         Some(Cmd::Bless { args }) => forward("bless", &args),
         Some(Cmd::BenchRays { args }) => forward("bench-rays", &args),
         Some(Cmd::Tradeoffs { args }) => forward("tradeoffs", &args),
+        // INSTRUCTOR BEGIN
+        Some(Cmd::Dev { command: DevCmd::Sync { check } }) => sync::sync(&workspace::own_root(), check),
+        // INSTRUCTOR END
     };
     match result {
         Ok(true) => ExitCode::SUCCESS,

@@ -14,12 +14,20 @@ pub struct Lecture {
     pub folder: String,
     /// The cargo package, `l07-reflection-refraction`.
     pub package: String,
-    /// The lectures it uses directly (numbers).
+    /// The chapter's title, `Reflection and refraction` (`[package.metadata.raylab]`).
+    pub title: String,
+    /// What a student writes in it, a line for the README and the book's tables.
+    pub summary: String,
+    /// The lectures it uses directly: its crate's, and those its checks draw with
+    /// (`stage-uses`: 05's stage draws with 04's intersections).
     pub uses: BTreeSet<String>,
 }
 
-/// The lectures of a workspace, and what each uses: its crate's
-/// dependencies and its checks' features (`grader/checks/Cargo.toml`).
+/// The lectures of a workspace, and what each uses, read from their
+/// Cargo.toml files: the course's manifest is the lecture crates themselves
+/// (number and name from the folder, the lectures it uses from
+/// `[dependencies]`, the rest from `[package.metadata.raylab]`). The lists
+/// that Cargo and mdBook cannot derive are written from it by `grader dev sync`.
 #[derive(Clone, Debug)]
 pub struct Workspace {
     pub root: PathBuf,
@@ -54,34 +62,31 @@ impl Workspace {
                 .and_then(|n| n.as_str())
                 .ok_or_else(|| format!("{}: no [package] name", manifest.display()))?
                 .to_owned();
-            let uses = table
+            let mut uses: BTreeSet<String> = table
                 .get("dependencies")
                 .and_then(|d| d.as_table())
                 .map(|deps| deps.keys().filter_map(|k| lecture_number(k)).collect())
                 .unwrap_or_default();
+            let meta = Metadata::read(&table).map_err(|e| format!("{}: {e}", manifest.display()))?;
+            uses.extend(meta.stage_uses);
             lectures.push(Lecture {
                 number: lecture_number(&name).unwrap_or_default(),
                 folder: name,
                 package,
+                title: meta.title,
+                summary: meta.summary,
                 uses,
             });
         }
         if lectures.is_empty() {
             return Err(format!("no lecture crates under {}", dir.display()));
         }
-        // The checks' features add what a lecture's checks use besides its crate (05's checks
-        // draw with 04's intersections): the build sets a lecture aside with all it needs.
-        let checks = root.join("grader/checks/Cargo.toml");
-        if let Ok(text) = std::fs::read_to_string(&checks) {
-            let table: toml::Table = text.parse().map_err(|e| format!("{}: {e}", checks.display()))?;
-            let features = table.get("features").and_then(|f| f.as_table()).cloned().unwrap_or_default();
-            for lecture in &mut lectures {
-                let enabled = features.get(&format!("l{}", lecture.number)).and_then(|f| f.as_array());
-                for feature in enabled.into_iter().flatten().filter_map(|f| f.as_str()) {
-                    if let Some(number) = feature.strip_prefix('l').filter(|n| n.len() == 2) {
-                        lecture.uses.insert(number.to_owned());
-                    }
-                }
+        for lecture in &lectures {
+            if let Some(unknown) = lecture.uses.iter().find(|u| !lectures.iter().any(|l| &l.number == *u)) {
+                return Err(format!(
+                    "lectures/{}/Cargo.toml: uses lecture {unknown}, which is not under lectures/",
+                    lecture.folder
+                ));
             }
         }
         Ok(Self { root: root.to_owned(), lectures })
@@ -147,6 +152,36 @@ impl Workspace {
             Err(e) => return Err(format!("{}: {e}", path.display())),
         };
         toml::from_str(&text).map_err(|e| format!("{}: {e}", path.display()))
+    }
+}
+
+/// A lecture's `[package.metadata.raylab]`.
+#[derive(serde::Deserialize)]
+#[serde(deny_unknown_fields, rename_all = "kebab-case")]
+struct Metadata {
+    title: String,
+    summary: String,
+    #[serde(default)]
+    stage_uses: Vec<String>,
+}
+
+impl Metadata {
+    fn read(table: &toml::Table) -> Result<Self, String> {
+        let meta = table.get("package").and_then(|p| p.get("metadata")).and_then(|m| m.get("raylab")).ok_or(
+            "no [package.metadata.raylab] (its title and summary: ARCHITECTURE.md, \"Adding a lecture\")",
+        )?;
+        let meta: Self = meta
+            .clone()
+            .try_into()
+            .map_err(|e: toml::de::Error| format!("[package.metadata.raylab]: {}", e.message()))?;
+        if let Some(bad) =
+            meta.stage_uses.iter().find(|n| n.len() != 2 || !n.bytes().all(|b| b.is_ascii_digit()))
+        {
+            return Err(format!(
+                "[package.metadata.raylab] stage-uses: {bad:?} is not a lecture number such as \"04\""
+            ));
+        }
+        Ok(meta)
     }
 }
 

@@ -20,6 +20,7 @@ pub mod introduction {}
 #[doc = include_str!("../../src/00-conventions.md")]
 pub mod ch00_conventions {}
 
+// BEGIN GENERATED chapters: written by `cargo run -p grader -- dev sync` from lectures/*/Cargo.toml; edit those, not this.
 #[doc = include_str!("../../src/01-transforms.md")]
 pub mod ch01_transforms {}
 
@@ -49,3 +50,4 @@ pub mod ch09_acceleration {}
 
 #[doc = include_str!("../../src/10-textures-sampling.md")]
 pub mod ch10_textures_sampling {}
+// END GENERATED chapters

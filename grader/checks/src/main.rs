@@ -10,24 +10,10 @@
 
 // Built with some lectures only (those that compile), parts of the crate go unused:
 // that is expected and not worth a warning in the student's terminal.
-#![cfg_attr(
-    not(all(
-        feature = "l01",
-        feature = "l02",
-        feature = "l03",
-        feature = "l04",
-        feature = "l05",
-        feature = "l06",
-        feature = "l07",
-        feature = "l08",
-        feature = "l09",
-        feature = "l10"
-    )),
-    allow(unused)
-)]
+#![cfg_attr(not(feature = "complete"), allow(unused))]
 
 mod check;
-#[cfg(any(feature = "l03", feature = "l10"))]
+#[cfg(any(feature = "l03", feature = "complete"))]
 mod exact;
 mod images;
 mod lectures;
@@ -35,9 +21,9 @@ mod platform;
 #[cfg(feature = "l03")]
 mod scene_objects;
 mod stages;
-#[cfg(feature = "l10")]
+#[cfg(feature = "complete")]
 mod tools;
-#[cfg(feature = "l10")]
+#[cfg(feature = "complete")]
 mod tracer;
 
 use std::path::{Path, PathBuf};
@@ -70,20 +56,20 @@ enum Command {
         out: PathBuf,
     },
     /// Render a TOML or MIT 6.837 scene with the complete tracer.
-    #[cfg(feature = "l10")]
+    #[cfg(feature = "complete")]
     Render(tools::render::RenderArgs),
     /// Regenerate the lectures' snapshots (PNG and AOVs) from the reference.
-    #[cfg(feature = "l10")]
+    #[cfg(feature = "complete")]
     Bless {
         /// Only this lecture (e.g. 02).
         lecture: Option<String>,
     },
     /// Primary-ray throughput of lecture 09's BVH on a mesh (run with --release).
-    #[cfg(feature = "l10")]
+    #[cfg(feature = "complete")]
     BenchRays(tools::bench::BenchArgs),
     /// Speed against accuracy, side by side: tables and plots under target/grader/tradeoffs (run with
     /// --release).
-    #[cfg(feature = "l10")]
+    #[cfg(feature = "complete")]
     Tradeoffs(tools::tradeoffs::TradeoffsArgs),
 }
 
@@ -96,13 +82,13 @@ fn main() -> ExitCode {
             serde_json::to_string_pretty(&infos).map(|json| println!("{json}")).map_err(|e| e.to_string())
         }
         Command::Run { id, verdict, out } => run(&id, &verdict, &out),
-        #[cfg(feature = "l10")]
+        #[cfg(feature = "complete")]
         Command::Render(args) => tools::render::render(&args),
-        #[cfg(feature = "l10")]
+        #[cfg(feature = "complete")]
         Command::Bless { lecture } => images::bless(lecture.as_deref()),
-        #[cfg(feature = "l10")]
+        #[cfg(feature = "complete")]
         Command::BenchRays(args) => tools::bench::bench_rays(&args),
-        #[cfg(feature = "l10")]
+        #[cfg(feature = "complete")]
         Command::Tradeoffs(args) => tools::tradeoffs::tradeoffs(&args),
     };
     match result {

@@ -83,22 +83,10 @@ pub fn needs(lecture: &str) -> &'static [&'static str] {
     &DRAWN_WITH[..count]
 }
 
-/// Whether stage `lecture`'s code is in this build (its lecture and the ones it draws with compiled).
-#[allow(clippy::match_like_matches_macro)] // each arm is true or false by the build's features
+/// Whether stage `lecture`'s code is in this build (its lecture and the ones it draws with
+/// compiled: the lecture's feature turns those on).
 pub fn built(lecture: &str) -> bool {
-    match lecture {
-        "01" => cfg!(feature = "l01"),
-        "02" => cfg!(feature = "l02"),
-        "03" => cfg!(feature = "l03"),
-        "04" => cfg!(feature = "l04"),
-        "05" => cfg!(feature = "l05"),
-        "06" => cfg!(feature = "l06"),
-        "07" => cfg!(feature = "l07"),
-        "08" => cfg!(feature = "l08"),
-        "09" => cfg!(feature = "l09"),
-        "10" => cfg!(feature = "l10"),
-        _ => false,
-    }
+    crate::lectures::lectures().iter().any(|l| l.number == lecture && !l.hidden && l.run.is_some())
 }
 
 /// Stage 01's colour of a ray: its unit direction d as a colour, ½ + ½d
@@ -177,7 +165,7 @@ pub fn render(lecture: &str, scene: &Scene) -> Result<Image, String> {
             "07" => return drawn(&brute, &|ray, hit| mirrored(scene, ray, hit)),
             #[cfg(feature = "l08")]
             "08" => return l08_ray_tree::render_scene(scene, &scene_settings(scene)).map(|(image, _)| image),
-            #[cfg(feature = "l10")]
+            #[cfg(feature = "complete")]
             "10" => {
                 use crate::tracer::{render_scene, scene_sampling};
                 return render_scene(scene, None, &scene_settings(scene), scene_sampling(scene))
@@ -290,7 +278,7 @@ pub fn pixel_tree(stage: &str, scene: &Scene, (x, y): (u32, u32)) -> Option<Stri
         format!("colour ({:.3}, {:.3}, {:.3})\n{tree}", color.x, color.y, color.z)
     };
     match stage {
-        #[cfg(feature = "l10")]
+        #[cfg(feature = "complete")]
         "10" => crate::tracer::pixel_tree(scene, (x, y), &scene_settings(scene)).ok().map(show),
         #[cfg(feature = "l08")]
         "08" => {

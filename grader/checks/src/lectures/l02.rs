@@ -245,3 +245,11 @@ mod code {
         Ok("1 case".into())
     }
 }
+
+#[cfg(all(test, feature = "l02"))]
+mod tests {
+    #[test]
+    fn every_declared_check_passes_on_the_reference() {
+        crate::check::testing::every_check_passes(super::CHECKS, super::run);
+    }
+}

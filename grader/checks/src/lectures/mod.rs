@@ -3,12 +3,15 @@
 //! a lecture does not compile) and, behind the lecture's feature, the code.
 //!
 //! To add a check: declare it in the lecture's `CHECKS` table and give it an
-//! arm in the lecture's `run`; `every_declared_check_runs` keeps the two in
-//! step: a declared check without an arm ends "crashed: no such check" in
-//! `grader --strict`, which CI runs on the reference.
+//! arm in the lecture's `run`; each lecture's test calls
+//! `check::testing::every_check_passes`, which fails on a declared check
+//! without an arm, and `grader --strict` (CI, on the reference) ends such a
+//! check "crashed: no such check". The list of lectures below is written by
+//! `grader dev sync` from the lecture crates.
 
 use crate::check::{CheckResult, Info, Meta};
 
+// BEGIN GENERATED modules: written by `cargo run -p grader -- dev sync` from lectures/*/Cargo.toml; edit those, not this.
 pub mod l01;
 pub mod l02;
 pub mod l03;
@@ -19,6 +22,7 @@ pub mod l07;
 pub mod l08;
 pub mod l09;
 pub mod l10;
+// END GENERATED modules
 // INSTRUCTOR BEGIN
 #[cfg(feature = "hidden")]
 pub mod hidden;
@@ -49,6 +53,7 @@ macro_rules! runner {
 pub fn lectures() -> Vec<Lecture> {
     #[allow(unused_mut)]
     let mut all = vec![
+        // BEGIN GENERATED lectures: written by `cargo run -p grader -- dev sync` from lectures/*/Cargo.toml; edit those, not this.
         Lecture { number: "01", checks: l01::CHECKS, run: runner!("l01", l01), hidden: false },
         Lecture { number: "02", checks: l02::CHECKS, run: runner!("l02", l02), hidden: false },
         Lecture { number: "03", checks: l03::CHECKS, run: runner!("l03", l03), hidden: false },
@@ -59,6 +64,7 @@ pub fn lectures() -> Vec<Lecture> {
         Lecture { number: "08", checks: l08::CHECKS, run: runner!("l08", l08), hidden: false },
         Lecture { number: "09", checks: l09::CHECKS, run: runner!("l09", l09), hidden: false },
         Lecture { number: "10", checks: l10::CHECKS, run: runner!("l10", l10), hidden: false },
+        // END GENERATED lectures
     ];
     // INSTRUCTOR BEGIN
     #[cfg(feature = "hidden")]
