@@ -140,7 +140,9 @@ fn files(root: &Path) -> Result<Vec<PathBuf>, String> {
     Ok(found)
 }
 
-/// `text` without its `INSTRUCTOR BEGIN … END` regions (marker lines included).
+/// `text` without its `INSTRUCTOR BEGIN … END` regions (marker lines included),
+/// and without the marker lines of its generated lists (their contents stay): those
+/// name `grader dev sync`, an instructors' command the handout does not have.
 fn strip_instructor(text: &str, file: &str) -> Result<String, String> {
     let mut out = String::with_capacity(text.len());
     let mut inside = None;
@@ -155,7 +157,7 @@ fn strip_instructor(text: &str, file: &str) -> Result<String, String> {
             if inside.take().is_none() {
                 return Err(format!("{file}:{}: INSTRUCTOR END without a BEGIN", n + 1));
             }
-        } else if inside.is_none() {
+        } else if inside.is_none() && !is_generated_marker(trimmed) {
             out.push_str(line);
         }
     }
@@ -167,6 +169,15 @@ fn strip_instructor(text: &str, file: &str) -> Result<String, String> {
 
 fn is_comment(line: &str) -> bool {
     line.starts_with("//") || line.starts_with('#')
+}
+
+/// `# BEGIN GENERATED name: …`, `<!-- END GENERATED name -->` (`sync.rs`).
+fn is_generated_marker(line: &str) -> bool {
+    let body =
+        line.strip_prefix("<!--").or_else(|| line.strip_prefix("//")).or_else(|| line.strip_prefix('#'));
+    body.is_some_and(|b| {
+        b.trim_start().starts_with("BEGIN GENERATED ") || b.trim_start().starts_with("END GENERATED ")
+    })
 }
 
 /// `text` with each solution region replaced by a `todo!` naming its
@@ -325,6 +336,13 @@ impl<'a> Bvh<'a> {
     fn instructor_regions_go_in_rust_and_toml() {
         let text = "a\n// INSTRUCTOR BEGIN\nsecret\n// INSTRUCTOR END\nb\n# INSTRUCTOR BEGIN\nhidden = []\n# INSTRUCTOR END\n";
         assert_eq!(strip_instructor(text, "x").unwrap(), "a\nb\n");
+    }
+
+    #[test]
+    fn generated_lists_keep_their_lines_and_lose_their_markers() {
+        let text = "<!-- BEGIN GENERATED t: by `x` -->\n| a |\n<!-- END GENERATED t -->\n\
+                    # BEGIN GENERATED f: by `x`\nl01 = []\n    // END GENERATED f\nb = 1\n";
+        assert_eq!(strip_instructor(text, "x").unwrap(), "| a |\nl01 = []\nb = 1\n");
     }
 
     #[test]

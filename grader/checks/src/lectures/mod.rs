@@ -6,8 +6,8 @@
 //! arm in the lecture's `run`; each lecture's test calls
 //! `check::testing::every_check_passes`, which fails on a declared check
 //! without an arm, and `grader --strict` (CI, on the reference) ends such a
-//! check "crashed: no such check". The list of lectures below is written by
-//! `grader dev sync` from the lecture crates.
+//! check "crashed: no such check". The list of lectures below is generated
+//! from the lecture crates' Cargo.toml.
 
 use crate::check::{CheckResult, Info, Meta};
 
