@@ -142,6 +142,10 @@ fn cargo_build(
     lectures: &BTreeSet<String>,
 ) -> Result<Attempt, String> {
     let mut features: Vec<String> = lectures.iter().map(|l| format!("l{l}")).collect();
+    // Every lecture built: the complete tracer, its tools and the final images.
+    if ws.lectures.iter().all(|l| lectures.contains(&l.number)) {
+        features.push("complete".into());
+    }
     if options.hidden {
         features.push("hidden".into());
     }

@@ -37,10 +37,13 @@ fn scratch() -> PathBuf {
 /// `cargo run -p grader` in `dir` with the tests' precision; stdout, stderr, success.
 fn cargo(dir: &Path, args: &[&str], target: Option<&Path>) -> (String, String, bool) {
     let mut command = Command::new(std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into()));
-    command.current_dir(dir).args(args);
+    // The precision's feature goes to cargo, before a `--` that starts the program's arguments.
+    let split = args.iter().position(|a| *a == "--").unwrap_or(args.len());
+    command.current_dir(dir).args(&args[..split]);
     if size_of::<raylab::Float>() == 8 {
         command.args(["--features", "raylab/f64"]);
     }
+    command.args(&args[split..]);
     if let Some(target) = target {
         command.env("CARGO_TARGET_DIR", target);
     }
@@ -622,3 +625,209 @@ fn the_gradescope_bundle_has_its_scripts_and_the_pristine_workspace() {
     assert!(dir.join("source/lectures/02-ray-casting/src/sphere.rs").is_file());
     assert!(!dir.join("source/target").exists());
 }
+
+/// The recipe of ARCHITECTURE.md ("Adding a lecture"), followed in a copy of the tree: a
+/// scratch lecture 11 (its crate, its checks file, its chapter) and `grader dev sync`, no
+/// other file edited by hand. The grader then lists and passes its check, the handout stubs
+/// its exercise, and the book's checks (the exercise tables, the `Book: §` references, the
+/// generated lists) pass with its chapter in SUMMARY.md.
+#[test]
+fn a_lecture_added_by_the_recipe_alone_is_graded_handed_out_and_in_the_book() {
+    let copy = scratch().join("recipe");
+    let tree = copy.join("tree");
+    let _ = std::fs::remove_dir_all(&tree);
+    copy_source_tree(&root(), &tree);
+    let added: &[(&str, &str)] = &[
+        ("lectures/11-scratch/Cargo.toml", RECIPE_CARGO),
+        ("lectures/11-scratch/src/lib.rs", RECIPE_LIB),
+        ("lectures/11-scratch/README.md", RECIPE_README),
+        ("lectures/11-scratch/hints.toml", "twice = [\"Scale it.\", \"By 2: v * 2.0.\"]\n"),
+        ("grader/checks/src/lectures/l11.rs", RECIPE_CHECKS),
+        ("book/src/11-scratch.md", RECIPE_CHAPTER),
+    ];
+    for (path, text) in added {
+        std::fs::create_dir_all(tree.join(path).parent().unwrap()).unwrap();
+        std::fs::write(tree.join(path), text).unwrap();
+    }
+    // Its own target folder, kept between runs (the copy's crates are other packages than the
+    // tree's, and two workspaces writing one target's binaries would race).
+    let target = copy.join("target");
+    let (out, stderr, ok) = cargo(&tree, &["run", "-q", "-p", "grader", "--", "dev", "sync"], Some(&target));
+    assert!(ok, "grader dev sync failed:\n{out}\n{stderr}");
+
+    // What the command wrote: the generated lists, and nothing else (Cargo.lock is cargo's).
+    let mut changed = Vec::new();
+    changed_files(&root(), &tree, &tree, &mut changed);
+    changed.sort();
+    let added_paths: Vec<String> = added.iter().map(|(p, _)| p.to_string()).collect();
+    let written: Vec<&String> =
+        changed.iter().filter(|p| !added_paths.contains(p) && p.as_str() != "Cargo.lock").collect();
+    assert_eq!(
+        written,
+        [
+            "README.md",
+            "book/doctests/Cargo.toml",
+            "book/doctests/src/lib.rs",
+            "book/src/SUMMARY.md",
+            "book/src/introduction.md",
+            "grader/checks/Cargo.toml",
+            "grader/checks/src/lectures/mod.rs",
+        ]
+        .iter()
+        .collect::<Vec<_>>(),
+        "files written by the recipe's command"
+    );
+    let summary = std::fs::read_to_string(tree.join("book/src/SUMMARY.md")).unwrap();
+    assert!(summary.contains("- [11 A scratch lecture](11-scratch.md)\n"), "{summary}");
+
+    // The grader lists lecture 11's check, builds it with lecture 01 only, and it passes.
+    let json = copy.join("grade.json");
+    let args = [
+        "run",
+        "-q",
+        "-p",
+        "grader",
+        "--",
+        "11",
+        "--strict",
+        "--format",
+        "json",
+        "-o",
+        json.to_str().unwrap(),
+    ];
+    let (_, stderr, ok) = cargo(&tree, &args, Some(&target));
+    let grade: Value =
+        serde_json::from_str(&std::fs::read_to_string(&json).unwrap_or_else(|e| panic!("{e}: {stderr}")))
+            .unwrap();
+    let ids: Vec<&str> = checks(&grade).iter().filter_map(|c| c["info"]["id"].as_str()).collect();
+    assert_eq!(ids, ["11/twice/unit"], "{stderr}");
+    assert!(
+        ok && status_of(&grade, "11/twice/unit")["status"] == "passed",
+        "{:#}\n{stderr}",
+        grade["checks"]
+    );
+
+    // The handout stubs its exercise.
+    let handout = copy.join("handout");
+    let handout_arg = handout.to_str().unwrap();
+    let (_, stderr, ok) =
+        cargo(&tree, &["run", "-q", "-p", "grader", "--", "handout", "--force", handout_arg], Some(&target));
+    assert!(ok, "{stderr}");
+    let stub = std::fs::read_to_string(handout.join("lectures/11-scratch/src/lib.rs")).unwrap();
+    assert!(stub.contains("todo!(\"11/twice: Book: §11.1 Twice\")") && !stub.contains("v * 2.0"), "{stub}");
+
+    // The book's and the course's checks: exercise tables, `Book: §` references, hints, and
+    // the generated lists in step (the grader's own tests, in the copy).
+    let (out, stderr, ok) = cargo(&tree, &["test", "-q", "-p", "grader"], Some(&target));
+    assert!(ok, "the grader's tests fail in the tree with lecture 11:\n{out}\n{stderr}");
+}
+
+/// Copies the tree's sources: everything but build output, git and the built book.
+fn copy_source_tree(from: &Path, to: &Path) {
+    std::fs::create_dir_all(to).unwrap();
+    for entry in std::fs::read_dir(from).unwrap() {
+        let path = entry.unwrap().path();
+        let name = path.file_name().unwrap().to_string_lossy().into_owned();
+        if ["target", ".git"].contains(&name.as_str()) || path.ends_with("book/book") {
+            continue;
+        }
+        let target = to.join(&name);
+        if path.is_dir() {
+            copy_source_tree(&path, &target);
+        } else {
+            std::fs::copy(&path, &target).unwrap();
+        }
+    }
+}
+
+/// The files under `dir` (a copy of `original` rooted at `copy`) that are new or differ.
+fn changed_files(original: &Path, copy: &Path, dir: &Path, out: &mut Vec<String>) {
+    for entry in std::fs::read_dir(dir).unwrap() {
+        let path = entry.unwrap().path();
+        let relative = path.strip_prefix(copy).unwrap();
+        if relative.starts_with("target") || relative.starts_with("book/book") {
+            continue;
+        }
+        if path.is_dir() {
+            changed_files(original, copy, &path, out);
+        } else if std::fs::read(original.join(relative)).ok() != Some(std::fs::read(&path).unwrap()) {
+            out.push(relative.to_string_lossy().replace('\\', "/"));
+        }
+    }
+}
+
+const RECIPE_CARGO: &str = r#"[package]
+name = "l11-scratch"
+version = "0.1.0"
+description = "Lecture 11: a scratch lecture, added by the recipe."
+edition.workspace = true
+rust-version.workspace = true
+license.workspace = true
+publish.workspace = true
+
+[package.metadata.raylab]
+title = "A scratch lecture"
+summary = "twice a vector"
+
+[dependencies]
+raylab.workspace = true
+l01-transforms = { path = "../01-transforms" }
+
+[lints]
+workspace = true
+"#;
+
+const RECIPE_LIB: &str = "//! Lecture 11: a scratch lecture.
+
+use raylab::Vec3;
+
+/// `v` scaled by two. Book: §11.1 Twice
+pub fn twice(v: Vec3) -> Vec3 {
+    // SOLUTION BEGIN
+    v * 2.0
+    // SOLUTION END
+}
+";
+
+const RECIPE_README: &str = "# Lecture 11 — a scratch lecture
+
+## Exercises, in order
+
+| # | file | function | book |
+|---|---|---|---|
+| 1 | `src/lib.rs` | `twice` — v scaled by two | §11.1 |
+";
+
+const RECIPE_CHECKS: &str = r#"//! Lecture 11, a scratch lecture: twice a vector.
+
+use crate::check::Meta;
+
+pub const CHECKS: &[Meta] = &[Meta::unit("twice", "(1, 2, 3) doubled is (2, 4, 6)")];
+
+#[cfg(feature = "l11")]
+pub fn run(name: &str) -> Option<crate::check::CheckResult> {
+    use raylab::Vec3;
+    let got = l11_scratch::twice(Vec3::new(1.0, 2.0, 3.0));
+    let check = || {
+        crate::check::ensure(got == Vec3::new(2.0, 4.0, 6.0), "(1, 2, 3)", "(2, 4, 6)", got, "scale by two")?;
+        Ok("1 case".into())
+    };
+    match name {
+        "twice/unit" => Some(check()),
+        _ => None,
+    }
+}
+"#;
+
+const RECIPE_CHAPTER: &str = "# 11 A scratch lecture
+
+## 11.1 Twice
+
+Twice a vector is the vector scaled by two.
+
+## Exercises
+
+| # | file | function |
+|---|---|---|
+| 1 | `src/lib.rs` | `twice` (§11.1) |
+";

@@ -22,7 +22,7 @@ use raylab::compare::compare;
 use raylab::{Color, Float, Image, Scene, Vec3};
 
 use crate::check::{CheckResult, Failure, Images, Info, Kind, Meta, fail};
-use crate::stages;
+use crate::stages::{self, FINAL_STAGE};
 
 /// A pixel differs when one of its 8-bit sRGB channels moves by more than
 /// this many steps: the f32 and f64 builds differ by a step or two where
@@ -147,16 +147,12 @@ pub fn infos() -> Vec<Info> {
             let about =
                 "the complete tracer (lectures 01–10) on an earlier lecture's scene, against the snapshot";
             let last = Meta { exercise: "final", name, needs: stages::needs(FINAL_STAGE), about, ..geometry };
-            finals.push(Info::new(FINAL_STAGE, &last, false, cfg!(feature = "complete")));
+            finals.push(Info::new(FINAL_STAGE, &last, false, stages::built(FINAL_STAGE)));
         }
     }
     infos.extend(finals);
     infos
 }
-
-/// The lecture whose stage is the complete tracer, and that grades every
-/// other lecture's scenes with it (`10/final/NN-S`).
-const FINAL_STAGE: &str = "10";
 
 /// Lectures 02–04 (intersections) and 09 (the hierarchy) are graded on their
 /// scenes' geometry; for the others the geometry is only compared to explain
@@ -181,7 +177,7 @@ pub fn run(id: &str, out: &Path) -> Option<CheckResult> {
             let dir = out.join(&file.lecture).join(file.name());
             Some(check_image(&file, lecture, &dir))
         }
-        "final" if lecture == FINAL_STAGE && cfg!(feature = "complete") => {
+        "final" if lecture == FINAL_STAGE && stages::built(FINAL_STAGE) => {
             let file = files
                 .into_iter()
                 .find(|f| f.lecture != FINAL_STAGE && format!("{}-{}", f.lecture, f.name()) == name)?;

@@ -3,7 +3,7 @@
 //! so that a solution fitted to the visible checks' numbers does not pass.
 //! Gradescope shows them after the grades are published.
 
-use super::Lecture;
+use super::{Lecture, runner};
 use crate::check::Meta;
 
 const L02: &[Meta] = &[Meta::unit(
@@ -33,26 +33,14 @@ const L07: &[Meta] =
 
 pub fn lectures() -> Vec<Lecture> {
     vec![
-        Lecture { number: "01", checks: L01, run: run_if!("l01", run01), hidden: true },
-        Lecture { number: "02", checks: L02, run: run_if!("l02", run02), hidden: true },
-        Lecture { number: "03", checks: L03, run: run_if!("l03", run03), hidden: true },
-        Lecture { number: "05", checks: L05, run: run_if!("l05", run05), hidden: true },
-        Lecture { number: "07", checks: L07, run: run_if!("l07", run07), hidden: true },
-        Lecture { number: "09", checks: L09, run: run_if!("l09", run09), hidden: true },
+        Lecture { number: "01", checks: L01, run: runner!("l01", run01), hidden: true },
+        Lecture { number: "02", checks: L02, run: runner!("l02", run02), hidden: true },
+        Lecture { number: "03", checks: L03, run: runner!("l03", run03), hidden: true },
+        Lecture { number: "05", checks: L05, run: runner!("l05", run05), hidden: true },
+        Lecture { number: "07", checks: L07, run: runner!("l07", run07), hidden: true },
+        Lecture { number: "09", checks: L09, run: runner!("l09", run09), hidden: true },
     ]
 }
-
-/// A hidden lecture's runner when its feature is on.
-macro_rules! run_if {
-    ($feature:literal, $run:ident) => {{
-        #[cfg(feature = $feature)]
-        let run: Option<fn(&str) -> Option<crate::check::CheckResult>> = Some($run);
-        #[cfg(not(feature = $feature))]
-        let run: Option<fn(&str) -> Option<crate::check::CheckResult>> = None;
-        run
-    }};
-}
-use run_if;
 
 #[cfg(feature = "l02")]
 fn run02(name: &str) -> Option<crate::check::CheckResult> {

@@ -38,32 +38,36 @@ pub struct Lecture {
     pub hidden: bool,
 }
 
-/// The runner of a lecture whose feature is on.
+/// `Some(run)` when the lecture's feature is on (its code is built), else `None`.
 macro_rules! runner {
-    ($feature:literal, $module:ident) => {{
+    ($feature:literal, $run:path) => {{
         #[cfg(feature = $feature)]
-        let run: Option<fn(&str) -> Option<CheckResult>> = Some($module::run);
+        let run: Option<fn(&str) -> Option<crate::check::CheckResult>> = Some($run);
         #[cfg(not(feature = $feature))]
-        let run: Option<fn(&str) -> Option<CheckResult>> = None;
+        let run: Option<fn(&str) -> Option<crate::check::CheckResult>> = None;
         run
     }};
 }
+// INSTRUCTOR BEGIN
+#[cfg(feature = "hidden")]
+pub(crate) use runner;
+// INSTRUCTOR END
 
 /// Every lecture's checks, in lecture order (hidden ones last).
 pub fn lectures() -> Vec<Lecture> {
     #[allow(unused_mut)]
     let mut all = vec![
         // BEGIN GENERATED lectures: written by `cargo run -p grader -- dev sync` from lectures/*/Cargo.toml; edit those, not this.
-        Lecture { number: "01", checks: l01::CHECKS, run: runner!("l01", l01), hidden: false },
-        Lecture { number: "02", checks: l02::CHECKS, run: runner!("l02", l02), hidden: false },
-        Lecture { number: "03", checks: l03::CHECKS, run: runner!("l03", l03), hidden: false },
-        Lecture { number: "04", checks: l04::CHECKS, run: runner!("l04", l04), hidden: false },
-        Lecture { number: "05", checks: l05::CHECKS, run: runner!("l05", l05), hidden: false },
-        Lecture { number: "06", checks: l06::CHECKS, run: runner!("l06", l06), hidden: false },
-        Lecture { number: "07", checks: l07::CHECKS, run: runner!("l07", l07), hidden: false },
-        Lecture { number: "08", checks: l08::CHECKS, run: runner!("l08", l08), hidden: false },
-        Lecture { number: "09", checks: l09::CHECKS, run: runner!("l09", l09), hidden: false },
-        Lecture { number: "10", checks: l10::CHECKS, run: runner!("l10", l10), hidden: false },
+        Lecture { number: "01", checks: l01::CHECKS, run: runner!("l01", l01::run), hidden: false },
+        Lecture { number: "02", checks: l02::CHECKS, run: runner!("l02", l02::run), hidden: false },
+        Lecture { number: "03", checks: l03::CHECKS, run: runner!("l03", l03::run), hidden: false },
+        Lecture { number: "04", checks: l04::CHECKS, run: runner!("l04", l04::run), hidden: false },
+        Lecture { number: "05", checks: l05::CHECKS, run: runner!("l05", l05::run), hidden: false },
+        Lecture { number: "06", checks: l06::CHECKS, run: runner!("l06", l06::run), hidden: false },
+        Lecture { number: "07", checks: l07::CHECKS, run: runner!("l07", l07::run), hidden: false },
+        Lecture { number: "08", checks: l08::CHECKS, run: runner!("l08", l08::run), hidden: false },
+        Lecture { number: "09", checks: l09::CHECKS, run: runner!("l09", l09::run), hidden: false },
+        Lecture { number: "10", checks: l10::CHECKS, run: runner!("l10", l10::run), hidden: false },
         // END GENERATED lectures
     ];
     // INSTRUCTOR BEGIN
