@@ -6,32 +6,8 @@ use serde::{Deserialize, Serialize};
 
 use crate::run::Ran;
 
-/// A check as `raylab-checks list` declares it.
-#[derive(Clone, Debug, Serialize, Deserialize)]
-pub struct Info {
-    pub id: String,
-    pub lecture: String,
-    pub exercise: String,
-    pub kind: String,
-    pub points: u32,
-    pub needs: Vec<String>,
-    pub about: String,
-    pub hidden: bool,
-    pub timeout_s: u32,
-    pub available: bool,
-}
-
-impl Info {
-    /// `exercise/name`, the id without the lecture.
-    pub fn short(&self) -> &str {
-        self.id.split_once('/').map_or(&self.id, |(_, rest)| rest)
-    }
-
-    /// `NN/exercise`.
-    pub fn exercise_id(&self) -> String {
-        format!("{}/{}", self.lecture, self.exercise)
-    }
-}
+pub use raylab_protocol::{Failure, Info, Kind};
+use raylab_protocol::Outcome;
 
 /// The verdicts of DESIGN.md, and "blocked".
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Serialize, Deserialize)]
@@ -60,36 +36,6 @@ impl Status {
             Self::TimedOut => "TIMED OUT",
         }
     }
-}
-
-/// The images of an image check.
-#[derive(Clone, Debug, Default, Serialize, Deserialize, PartialEq)]
-pub struct Images {
-    pub expected: String,
-    pub yours: String,
-    pub diff: String,
-    pub flip_mean: f64,
-    pub flip_fraction_over: f64,
-}
-
-/// A failed expectation as the check reported it.
-#[derive(Clone, Debug, Default, Serialize, Deserialize, PartialEq)]
-pub struct Failure {
-    pub case: String,
-    pub expected: String,
-    pub got: String,
-    pub cause: String,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub images: Option<Images>,
-}
-
-/// What a check's verdict file holds.
-#[derive(Clone, Debug, Deserialize)]
-#[serde(tag = "status", rename_all = "lowercase")]
-enum Written {
-    Passed { detail: String },
-    Failed(Failure),
-    Panicked { message: String, file: String, line: u32 },
 }
 
 /// The verdict on one check.
@@ -151,7 +97,7 @@ fn is_todo(message: &str) -> bool {
 /// Turns how the process ended into a verdict. `lecture_of_file` maps a
 /// source path to its lecture number.
 pub fn classify(info: Info, ran: &Ran, lecture_of_file: impl Fn(&str) -> Option<String>) -> Verdict {
-    let written = ran.verdict.as_deref().and_then(|text| serde_json::from_str::<Written>(text).ok());
+    let written = ran.verdict.as_deref().and_then(|text| serde_json::from_str::<Outcome>(text).ok());
     let mut verdict = match (written, ran) {
         (_, Ran { timed_out: true, .. }) => Verdict::new(
             info.clone(),
@@ -169,10 +115,10 @@ pub fn classify(info: Info, ran: &Ran, lecture_of_file: impl Fn(&str) -> Option<
                 crate::run::MAX_OUTPUT >> 20
             ),
         ),
-        (Some(Written::Passed { detail }), Ran { status: Some(s), .. }) if s.success() => {
+        (Some(Outcome::Passed { detail, .. }), Ran { status: Some(s), .. }) if s.success() => {
             Verdict::new(info.clone(), Status::Passed, detail)
         }
-        (Some(Written::Failed(failure)), Ran { status: Some(s), .. }) if s.success() => {
+        (Some(Outcome::Failed(failure)), Ran { status: Some(s), .. }) if s.success() => {
             let summary = if failure.case.is_empty() {
                 failure.got.clone()
             } else {
@@ -180,13 +126,13 @@ pub fn classify(info: Info, ran: &Ran, lecture_of_file: impl Fn(&str) -> Option<
             };
             Verdict { failure: Some(failure), ..Verdict::new(info.clone(), Status::Failed, summary) }
         }
-        (Some(Written::Panicked { message, file, line }), _) => {
+        (Some(Outcome::Panicked { message, file, line }), _) => {
             let where_ = format!("{file}:{line}");
             let lecture = lecture_of_file(&file);
             if is_todo(&message) {
                 let exercise = todo_exercise(&message);
                 let own = exercise.as_deref().map_or(lecture.as_deref() == Some(&info.lecture[..]), |e| {
-                    e == info.exercise_id() || (info.kind == "image" && e.starts_with(&info.lecture))
+                    e == info.exercise_id() || (info.kind == Kind::Image && e.starts_with(&info.lecture))
                 });
                 if own {
                     Verdict::new(info.clone(), Status::NotStarted, format!("todo!() at {where_}"))
@@ -292,7 +238,7 @@ pub fn test_info(id: &str) -> Info {
         id: id.into(),
         lecture: parts.next().unwrap().into(),
         exercise: parts.next().unwrap().into(),
-        kind: "unit".into(),
+        kind: Kind::Unit,
         points: 2,
         needs: vec![],
         about: String::new(),

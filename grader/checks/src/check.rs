@@ -10,19 +10,7 @@
 use std::fmt::Display;
 
 use raylab::{Float, Vec3};
-use serde::{Deserialize, Serialize};
-
-/// The kinds of check (DESIGN.md, "The grader").
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "lowercase")]
-pub enum Kind {
-    /// Exact expectations with stated tolerances, at ordinary inputs.
-    Unit,
-    /// The stability cases of the lecture: far, tiny, grazing, degenerate.
-    Extreme,
-    /// A lecture scene rendered with the student's code against its snapshot.
-    Image,
-}
+pub use raylab_protocol::{Failure, Images, Info, Kind, Outcome};
 
 /// A check as the lecture tables declare it.
 #[derive(Clone, Copy, Debug)]
@@ -67,42 +55,22 @@ impl Meta {
     }
 }
 
-/// A check as the grader sees it: lecture, id, and the declaration.
-#[derive(Clone, Debug, Serialize, Deserialize)]
-pub struct Info {
-    /// `NN/exercise/name`.
-    pub id: String,
-    pub lecture: String,
-    pub exercise: String,
-    pub kind: Kind,
-    pub points: u32,
-    pub needs: Vec<String>,
-    pub about: String,
-    /// Seen only by `grader grade --submission`.
-    pub hidden: bool,
-    /// Wall-clock seconds before the grader stops it.
-    pub timeout_s: u32,
-    /// Its code is in this build (its lecture compiled).
-    pub available: bool,
-}
-
-impl Info {
-    pub fn new(lecture: &str, meta: &Meta, hidden: bool, available: bool) -> Self {
-        Self {
-            id: format!("{lecture}/{}/{}", meta.exercise, meta.name),
-            lecture: lecture.to_owned(),
-            exercise: meta.exercise.to_owned(),
-            kind: meta.kind,
-            points: meta.points,
-            needs: meta.needs.iter().map(|n| (*n).to_owned()).collect(),
-            about: meta.about.to_owned(),
-            hidden,
-            timeout_s: match meta.kind {
-                Kind::Image => IMAGE_TIMEOUT_S,
-                _ => UNIT_TIMEOUT_S,
-            },
-            available,
-        }
+/// A check as the grader sees it: `meta` declared in lecture `lecture`.
+pub fn info(lecture: &str, meta: &Meta, hidden: bool, available: bool) -> Info {
+    Info {
+        id: format!("{lecture}/{}/{}", meta.exercise, meta.name),
+        lecture: lecture.to_owned(),
+        exercise: meta.exercise.to_owned(),
+        kind: meta.kind,
+        points: meta.points,
+        needs: meta.needs.iter().map(|n| (*n).to_owned()).collect(),
+        about: meta.about.to_owned(),
+        hidden,
+        timeout_s: match meta.kind {
+            Kind::Image => IMAGE_TIMEOUT_S,
+            _ => UNIT_TIMEOUT_S,
+        },
+        available,
     }
 }
 
@@ -116,45 +84,6 @@ pub const UNIT_TIMEOUT_S: u32 = 10;
 /// scene (64 area-light samples per pixel) in about 2 s in a debug build on
 /// one thread.
 pub const IMAGE_TIMEOUT_S: u32 = 60;
-
-/// Images a failed image check wrote, relative to the workspace root.
-#[derive(Clone, Debug, Default, Serialize, Deserialize, PartialEq)]
-pub struct Images {
-    pub expected: String,
-    pub yours: String,
-    pub diff: String,
-    /// Mean FLIP error of yours against expected (0 = identical, 1 = opposite).
-    pub flip_mean: f64,
-    /// The fraction of pixels whose FLIP error is above [`crate::images::FLIP_THRESHOLD`].
-    pub flip_fraction_over: f64,
-}
-
-/// How a check that ran to its end came out; written as JSON to the verdict
-/// file the grader names.
-#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
-#[serde(tag = "status", rename_all = "lowercase")]
-pub enum Outcome {
-    Passed {
-        /// What was measured, e.g. "0.02 % of pixels differ".
-        detail: String,
-        #[serde(default, skip_serializing_if = "Option::is_none")]
-        images: Option<Images>,
-    },
-    Failed(Failure),
-}
-
-/// A failed expectation: what was expected, what came, and the likely cause.
-#[derive(Clone, Debug, Serialize, Deserialize, PartialEq, Default)]
-pub struct Failure {
-    /// The case, e.g. "ray from (0, 0, 5) along −z, sphere r = 1 at the origin".
-    pub case: String,
-    pub expected: String,
-    pub got: String,
-    /// One line: the likely cause in the student's code.
-    pub cause: String,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub images: Option<Box<Images>>,
-}
 
 /// What a check function returns: a detail line when it passes.
 pub type CheckResult = Result<String, Failure>;

@@ -138,16 +138,16 @@ pub fn infos() -> Vec<Info> {
             about: "object-id, depth and normal images against the reference's",
         };
         if has_geometry_check(&file.lecture) {
-            infos.push(Info::new(&file.lecture, &geometry, false, stages::built(&file.lecture)));
+            infos.push(crate::check::info(&file.lecture, &geometry, false, stages::built(&file.lecture)));
         }
         let image = Meta { exercise: "image", about: stages::about(&file.lecture), ..geometry };
-        infos.push(Info::new(&file.lecture, &image, false, stages::built(&file.lecture)));
+        infos.push(crate::check::info(&file.lecture, &image, false, stages::built(&file.lecture)));
         if file.lecture != FINAL_STAGE {
             let name: &'static str = Box::leak(format!("{}-{}", file.lecture, file.name()).into_boxed_str());
             let about =
                 "the complete tracer (lectures 01–10) on an earlier lecture's scene, against the snapshot";
             let last = Meta { exercise: "final", name, needs: stages::needs(FINAL_STAGE), about, ..geometry };
-            finals.push(Info::new(FINAL_STAGE, &last, false, stages::built(FINAL_STAGE)));
+            finals.push(crate::check::info(FINAL_STAGE, &last, false, stages::built(FINAL_STAGE)));
         }
     }
     infos.extend(finals);

@@ -121,9 +121,10 @@ fn run(id: &str, verdict: &Path, out: &Path) -> Result<(), String> {
             .or_else(|| info.payload().downcast_ref::<String>().cloned())
             .unwrap_or_else(|| "(a panic without a message)".to_owned());
         let (path, line) = info.location().map_or((String::new(), 0), |l| (l.file().to_owned(), l.line()));
-        let json =
-            serde_json::json!({ "status": "panicked", "message": message, "file": path, "line": line });
-        let _ = std::fs::write(&file, json.to_string());
+        let panicked = check::Outcome::Panicked { message, file: path, line };
+        if let Ok(json) = serde_json::to_string(&panicked) {
+            let _ = std::fs::write(&file, json);
+        }
         default_hook(info);
     }));
     let result = if id.split('/').nth(1).is_some_and(|kind| matches!(kind, "image" | "geometry" | "final")) {

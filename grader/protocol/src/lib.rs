@@ -1,0 +1,141 @@
+//! What the `grader` driver and the `raylab-checks` binary exchange, as JSON:
+//! `raylab-checks list` prints every check's [`Info`]; `raylab-checks run ID
+//! --verdict FILE` writes the check's [`Outcome`] to FILE. One definition for
+//! both sides, so the two cannot drift apart.
+
+use serde::{Deserialize, Serialize};
+
+/// The kinds of check (ARCHITECTURE.md, "The exercise contract").
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Kind {
+    /// Exact expectations with stated tolerances, at ordinary inputs.
+    Unit,
+    /// The stability cases of the lecture: far, tiny, grazing, degenerate.
+    Extreme,
+    /// A lecture scene rendered with the student's code against its snapshot.
+    Image,
+}
+
+/// A check as `raylab-checks list` declares it.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Info {
+    /// `NN/exercise/name`.
+    pub id: String,
+    pub lecture: String,
+    /// The function's name (`hit_slabs`, `PerspectiveCamera::generate_ray`), or
+    /// `image`, `geometry`, `final` for scenes.
+    pub exercise: String,
+    pub kind: Kind,
+    pub points: u32,
+    /// Other exercises whose result this check relies on, as `NN/function`.
+    pub needs: Vec<String>,
+    /// What the check tests, in one line.
+    pub about: String,
+    /// Seen only by `grader grade --submission`.
+    pub hidden: bool,
+    /// Wall-clock seconds before the grader stops it.
+    pub timeout_s: u32,
+    /// Its code is in this build (its lecture compiled).
+    pub available: bool,
+}
+
+impl Info {
+    /// `exercise/name`, the id without the lecture.
+    pub fn short(&self) -> &str {
+        self.id.split_once('/').map_or(&self.id, |(_, rest)| rest)
+    }
+
+    /// `NN/exercise`.
+    pub fn exercise_id(&self) -> String {
+        format!("{}/{}", self.lecture, self.exercise)
+    }
+}
+
+/// Images an image check wrote, relative to the workspace root.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct Images {
+    pub expected: String,
+    pub yours: String,
+    pub diff: String,
+    /// Mean FLIP error of yours against expected (0 = identical, 1 = opposite).
+    pub flip_mean: f64,
+    /// The fraction of pixels whose FLIP error is above the image checks' threshold.
+    pub flip_fraction_over: f64,
+}
+
+/// A failed expectation: what was expected, what came, and the likely cause.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct Failure {
+    /// The case, e.g. "ray from (0, 0, 5) along −z, sphere r = 1 at the origin".
+    pub case: String,
+    pub expected: String,
+    pub got: String,
+    /// One line: the likely cause in the student's code.
+    pub cause: String,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub images: Option<Box<Images>>,
+}
+
+/// How a check's process came out, as it writes it to the verdict file.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "status", rename_all = "lowercase")]
+pub enum Outcome {
+    Passed {
+        /// What was measured, e.g. "0.02 % of pixels differ".
+        detail: String,
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        images: Option<Images>,
+    },
+    Failed(Failure),
+    /// The check panicked (the student's code, most often): the panic's message and place.
+    Panicked {
+        message: String,
+        file: String,
+        line: u32,
+    },
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn outcomes_are_tagged_by_status_in_json() {
+        let passed = Outcome::Passed { detail: "7 cases".into(), images: None };
+        assert_eq!(serde_json::to_string(&passed).unwrap(), r#"{"status":"passed","detail":"7 cases"}"#);
+        let panicked = r#"{"status":"panicked","message":"not yet","file":"lectures/02-ray-casting/src/sphere.rs","line":9}"#;
+        let read: Outcome = serde_json::from_str(panicked).unwrap();
+        assert_eq!(
+            read,
+            Outcome::Panicked {
+                message: "not yet".into(),
+                file: "lectures/02-ray-casting/src/sphere.rs".into(),
+                line: 9
+            }
+        );
+        let failed = Outcome::Failed(Failure { case: "c".into(), cause: "why".into(), ..Failure::default() });
+        let json = serde_json::to_string(&failed).unwrap();
+        assert_eq!(json, r#"{"status":"failed","case":"c","expected":"","got":"","cause":"why"}"#);
+        assert_eq!(serde_json::from_str::<Outcome>(&json).unwrap(), failed);
+    }
+
+    #[test]
+    fn an_info_knows_its_short_id_and_exercise() {
+        let info = Info {
+            id: "03/hit_slabs/unit".into(),
+            lecture: "03".into(),
+            exercise: "hit_slabs".into(),
+            kind: Kind::Unit,
+            points: 1,
+            needs: vec![],
+            about: String::new(),
+            hidden: false,
+            timeout_s: 10,
+            available: true,
+        };
+        assert_eq!(info.short(), "hit_slabs/unit");
+        assert_eq!(info.exercise_id(), "03/hit_slabs");
+        assert_eq!(serde_json::to_value(&info).unwrap()["kind"], "unit");
+    }
+}
