@@ -12,7 +12,7 @@
 #
 # sh book/figures.sh --check   changes nothing; fails (exit 1) naming every
 #   figure that differs from its snapshot (stale: run sh book/figures.sh),
-#   whose snapshot is missing, or that is in src/figures/ but not listed here.
+#   whose snapshot is missing, or that is in src/figures/ but shown by no chapter.
 #   Byte-equal is the right test: a figure is a copy of its snapshot, or a
 #   render that the same code repeats pixel for pixel.
 set -eu
@@ -44,21 +44,6 @@ put() { # lecture-folder snapshot-file figure-file
         problems=$((problems + 1))
     fi
 }
-copy() { # lecture-folder snapshot...: SNAPSHOT.png as NN-SNAPSHOT.png
-    lecture=$1; shift
-    n=$(echo "$lecture" | cut -c1-2)
-    for scene in "$@"; do put "$lecture" "$scene.png" "$n-$scene.png"; done
-}
-final() { # lecture-folder scene...: the complete tracer's SCENE.final.png as NN-SCENE.png
-    lecture=$1; shift
-    n=$(echo "$lecture" | cut -c1-2)
-    for scene in "$@"; do put "$lecture" "$scene.final.png" "$n-$scene.png"; done
-}
-stage() { # lecture-folder scene...: the lecture's stage, SCENE.png, as NN-SCENE.stage.png
-    lecture=$1; shift
-    n=$(echo "$lecture" | cut -c1-2)
-    for scene in "$@"; do put "$lecture" "$scene.png" "$n-$scene.stage.png"; done
-}
 # render lecture-folder scene aov: the scene's depth or normal image as a
 # viewable PNG (`grader render --aov depth|normal -o X.png`), rendered afresh
 # by the reference (in --check too: compared with the committed figure).
@@ -81,39 +66,41 @@ render() {
     fi
     rm -f "$tmp"
 }
-final 01-transforms perspective orthographic rolled
-stage 01-transforms perspective orthographic rolled
-final 02-ray-casting spheres-on-plane overlapping-depths inside-sphere
-copy 02-ray-casting spheres-on-plane.id
-stage 02-ray-casting spheres-on-plane overlapping-depths inside-sphere orthographic
-render 02-ray-casting spheres-on-plane depth
-render 02-ray-casting spheres-on-plane normal
-final 03-polygons-triangles boxes polygons triangles meshes
-stage 03-polygons-triangles boxes polygons triangles meshes
-final 04-quadrics-transforms cylinders-cones ellipsoid extreme-scale transformed-mesh
-stage 04-quadrics-transforms cylinders-cones ellipsoid extreme-scale transformed-mesh
-final 05-shading phong-exponents blinn-vs-phong coloured-lights attenuation spot
-stage 05-shading phong-exponents blinn-vs-phong coloured-lights attenuation spot
-final 06-shadows sphere-shadow coloured-shadows far-from-origin soft-shadows-1 soft-shadows-4 soft-shadows-16 soft-shadows-64
-stage 06-shadows sphere-shadow coloured-shadows glass-shadow-filtered soft-shadows-16
-final 07-reflection-refraction mirror-floor reflective-sphere glass-spheres tir-slab
-stage 07-reflection-refraction mirror-floor reflective-sphere glass-spheres tir-slab
-final 08-ray-tree whitted whitted-no-shadows facing-mirrors
-stage 08-ray-tree whitted whitted-no-shadows facing-mirrors
-final 09-acceleration many-spheres torus-65k
-stage 09-acceleration many-spheres torus-65k
-copy 10-textures-sampling checkerboard solid-checker checker-aliasing-1spp checker-aliasing-16spp
+# The figures are those the chapters show: every figures/NN-NAME.png named in
+# book/src/*.md, made from lecture NN's snapshots by the rules above.
+lecture_folder() { # NN: the name of the folder lectures/NN-*
+    for dir in "$root"/lectures/"$1"-*/; do basename "$dir"; return; done
+}
+shown=$(grep -oh 'figures/[0-9][0-9]-[A-Za-z0-9._-]*\.png' "$root"/book/src/*.md | sed 's#^figures/##' | sort -u)
+for figure in $shown; do
+    lecture=$(lecture_folder "$(echo "$figure" | cut -c1-2)")
+    name=${figure#??-}
+    name=${name%.png}
+    case "$name" in
+        *.stage) put "$lecture" "${name%.stage}.png" "$figure" ;;
+        *.depth | *.normal) render "$lecture" "${name%.*}" "${name##*.}" ;;
+        *)
+            # The complete tracer's picture where there is one (lectures 01–09), else the
+            # snapshot itself (lecture 10's own scenes, geometry images such as SCENE.id).
+            if [ -f "$root/lectures/$lecture/snapshots/$name.final.png" ]; then
+                put "$lecture" "$name.final.png" "$figure"
+            else
+                put "$lecture" "$name.png" "$figure"
+            fi
+            ;;
+    esac
+done
 if ! $check; then
     echo "figures: $(ls "$out" | wc -l) files in $out"
     exit 0
 fi
-# Figures that no line above makes (left behind by a renamed scene).
+# Figures that no chapter shows (left behind by a renamed scene).
 for file in "$out"/*; do
     [ -e "$file" ] || continue
     name=$(basename "$file")
     case " $listed " in
         *" $name "*) ;;
-        *) echo "figures: book/src/figures/$name is not made by book/figures.sh"; problems=$((problems + 1)) ;;
+        *) echo "figures: book/src/figures/$name is shown by no chapter"; problems=$((problems + 1)) ;;
     esac
 done
 if [ "$problems" -gt 0 ]; then
