@@ -340,9 +340,19 @@ impl<'a> Bvh<'a> {
 
     #[test]
     fn generated_lists_keep_their_lines_and_lose_their_markers() {
-        let text = "<!-- BEGIN GENERATED t: by `x` -->\n| a |\n<!-- END GENERATED t -->\n\
-                    # BEGIN GENERATED f: by `x`\nl01 = []\n    // END GENERATED f\nb = 1\n";
-        assert_eq!(strip_instructor(text, "x").unwrap(), "| a |\nl01 = []\nb = 1\n");
+        // Lines of a string, each quoted: a marker at the start of a source line would itself
+        // be taken out of this file's handout copy.
+        let text = [
+            "<!-- BEGIN GENERATED t: by `x` -->",
+            "| a |",
+            "<!-- END GENERATED t -->",
+            "# BEGIN GENERATED f: by `x`",
+            "l01 = []",
+            "    // END GENERATED f",
+            "b = 1\n",
+        ]
+        .join("\n");
+        assert_eq!(strip_instructor(&text, "x").unwrap(), "| a |\nl01 = []\nb = 1\n");
     }
 
     #[test]

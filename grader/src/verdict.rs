@@ -6,8 +6,8 @@ use serde::{Deserialize, Serialize};
 
 use crate::run::Ran;
 
-pub use raylab_protocol::{Failure, Info, Kind};
 use raylab_protocol::Outcome;
+pub use raylab_protocol::{Failure, Info, Kind};
 
 /// The verdicts of DESIGN.md, and "blocked".
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Serialize, Deserialize)]
