@@ -46,6 +46,11 @@ impl Meta {
     }
     // INSTRUCTOR END
 
+    /// `exercise/name`: the id within its lecture.
+    pub fn short_id(&self) -> String {
+        format!("{}/{}", self.exercise, self.name)
+    }
+
     pub const fn points(self, points: u32) -> Self {
         Self { points, ..self }
     }

@@ -7,58 +7,65 @@ use crate::check::Meta;
 /// The cameras apply `world_from_camera` through the lecture's own helpers.
 const CAMERA_NEEDS: &[&str] = &["01/transform_point", "01/transform_vector"];
 
-pub const CHECKS: &[Meta] = &[
-    Meta::unit("translate", "translate(t): the origin goes to t (the last column), the axes stay"),
-    Meta::unit("scale", "scale(s) is diag(sₓ, s_y, s_z, 1): the origin stays, w stays 1"),
-    Meta::unit("rotate_x", "right-handed turns about x in radians: a quarter turn takes +y to +z"),
-    Meta::unit("rotate_y", "right-handed turns about y in radians: a quarter turn takes +z to +x"),
-    Meta::unit("rotate_z", "right-handed turns about z in radians: a quarter turn takes +x to +y"),
+declare_checks! {
+    "l01";
+    Meta::unit("translate", "translate(t): the origin goes to t (the last column), the axes stay")
+        => translate_cases(translate),
+    Meta::unit("scale", "scale(s) is diag(sₓ, s_y, s_z, 1): the origin stays, w stays 1")
+        => scale_cases(scale),
+    Meta::unit("rotate_x", "right-handed turns about x in radians: a quarter turn takes +y to +z")
+        => rotation_cases(0, rotate_x),
+    Meta::unit("rotate_y", "right-handed turns about y in radians: a quarter turn takes +z to +x")
+        => rotation_cases(1, rotate_y),
+    Meta::unit("rotate_z", "right-handed turns about z in radians: a quarter turn takes +x to +y")
+        => rotation_cases(2, rotate_z),
     Meta::unit(
         "rotate_axis",
         "Rodrigues' formula: fixes its axis, orthonormal, right-handed, the coordinate axes, any axis length",
-    ),
-    Meta::unit("transform_point", "m·(p, 1): the translation applies, and w' ≠ 1 divides"),
-    Meta::unit("transform_vector", "m·(v, 0): the linear part only, no translation"),
-    Meta::unit("frame", "world_from_frame has the columns i, j, k and the origin"),
+    ) => rotate_axis_cases(rotate_axis),
+    Meta::unit("transform_point", "m·(p, 1): the translation applies, and w' ≠ 1 divides")
+        => transform_point_cases(transform_point),
+    Meta::unit("transform_vector", "m·(v, 0): the linear part only, no translation")
+        => transform_vector_cases(transform_vector),
+    Meta::unit("frame", "world_from_frame has the columns i, j, k and the origin") => frame_cases(frame),
     Meta::unit(
         "is_basis",
         "independent, dependent and nearly coplanar triples, judged by a relative \
         threshold",
-    ),
+    ) => is_basis_cases(is_basis),
     Meta::extreme(
         "is_basis",
         "any-units",
         "axes whose length product overflows or underflows: the verdict must not depend on units",
-    ),
-    Meta::unit("look_at", "the columns u, v, w, eye for views along the axes and a generic one; eye = at"),
+    ) => is_basis_any_units(is_basis),
+    Meta::unit("look_at", "the columns u, v, w, eye for views along the axes and a generic one; eye = at")
+        => look_at_cases(look_at),
     Meta::extreme(
         "look_at",
         "degenerate-up",
         "up parallel to the view: an error, never NaN; up nearly parallel, views near −z, tiny and huge \
             distances: an error or an orthonormal basis within 1e-6",
-    ),
-    Meta::unit("screen_coords", "pixel centres: corners, the centre pixel, a one-pixel image, large images"),
+    ) => look_at_degenerate(look_at),
+    Meta::unit("screen_coords", "pixel centres: corners, the centre pixel, a one-pixel image, large images")
+        => screen_cases(screen_coords),
     Meta::unit(
         "PerspectiveCamera::generate_ray",
         "directions (sx·aspect·tan(fovy/2), sy·tan(fovy/2), −1) taken to the world and normalised, from the \
             eye",
     )
-    .needs(CAMERA_NEEDS),
+    .needs(CAMERA_NEEDS) => perspective_cases(PerspectiveCamera::generate_ray),
     Meta::unit(
         "OrthographicCamera::generate_ray",
         "origins (sx·aspect·h/2, sy·h/2, 0) taken to the world as points, one direction −w for every ray",
     )
-    .needs(CAMERA_NEEDS),
-];
-
-#[cfg(feature = "l01")]
-pub use code::run;
+    .needs(CAMERA_NEEDS) => orthographic_cases(OrthographicCamera::generate_ray),
+}
 
 #[cfg(feature = "l01")]
 #[allow(clippy::result_large_err)] // Failure is check.rs's report, returned by value as in every lecture
 #[allow(clippy::unnecessary_cast)] // widening Float to f64 for references is the identity in an f64 build
 mod code {
-    use l01_transforms::{
+    pub(super) use l01_transforms::{
         CameraError, OrthographicCamera, PerspectiveCamera, frame, is_basis, look_at, rotate_axis, rotate_x,
         rotate_y, rotate_z, scale, screen_coords, transform_point, transform_vector, translate,
     };
@@ -66,28 +73,6 @@ mod code {
     use raylab::{Float, Mat4, Ray, Vec3, Vec4, radians};
 
     use crate::check::{CheckResult, Failure, close3, ensure, fail, num, vec3};
-
-    pub fn run(name: &str) -> Option<CheckResult> {
-        Some(match name {
-            "translate/unit" => translate_cases(translate),
-            "scale/unit" => scale_cases(scale),
-            "rotate_x/unit" => rotation_cases(0, rotate_x),
-            "rotate_y/unit" => rotation_cases(1, rotate_y),
-            "rotate_z/unit" => rotation_cases(2, rotate_z),
-            "rotate_axis/unit" => rotate_axis_cases(rotate_axis),
-            "transform_point/unit" => transform_point_cases(transform_point),
-            "transform_vector/unit" => transform_vector_cases(transform_vector),
-            "frame/unit" => frame_cases(frame),
-            "is_basis/unit" => is_basis_cases(is_basis),
-            "is_basis/any-units" => is_basis_any_units(is_basis),
-            "look_at/unit" => look_at_cases(look_at),
-            "look_at/degenerate-up" => look_at_degenerate(look_at),
-            "screen_coords/unit" => screen_cases(screen_coords),
-            "PerspectiveCamera::generate_ray/unit" => perspective_cases(PerspectiveCamera::generate_ray),
-            "OrthographicCamera::generate_ray/unit" => orthographic_cases(OrthographicCamera::generate_ray),
-            _ => return None,
-        })
-    }
 
     pub(super) type VecToMat = fn(Vec3) -> Mat4;
     pub(super) type AngleToMat = fn(Float) -> Mat4;
@@ -1050,15 +1035,14 @@ mod tests {
 
     use crate::check::testing::caught;
 
-    use l01_transforms::{CameraError, OrthographicCamera, PerspectiveCamera, rotate_axis};
+    pub(super) use l01_transforms::{CameraError, OrthographicCamera, PerspectiveCamera, rotate_axis};
     use raylab::{Float, Mat4, Ray, Vec3, Vec4, radians};
 
-    use super::CHECKS;
     use super::code::*;
 
     #[test]
     fn every_declared_check_passes_on_the_reference() {
-        crate::check::testing::every_check_passes(CHECKS, run);
+        crate::check::testing::every_check_passes(super::CHECKS, super::run);
     }
 
     #[test]

@@ -5,50 +5,40 @@ use crate::check::Meta;
 const SPHERE_CAUSE: &str =
     "solve |o + t·d − c|² = r², keep the nearer root inside the range, else the farther one";
 
-pub const CHECKS: &[Meta] = &[
+declare_checks! {
+    "l02";
     Meta::unit(
         "hit_sphere_algebraic",
         "the textbook quadratic at ordinary rays: front, inside, miss, behind, tangent",
-    ),
-    Meta::unit("hit_sphere_geometric", "the slides' geometric construction at ordinary rays"),
-    Meta::unit("hit_sphere_stable", "the robust quadratic at ordinary rays"),
+    ) => sphere_cases(hit_sphere_algebraic),
+    Meta::unit("hit_sphere_geometric", "the slides' geometric construction at ordinary rays")
+        => sphere_cases(hit_sphere_geometric),
+    Meta::unit("hit_sphere_stable", "the robust quadratic at ordinary rays")
+        => sphere_cases(hit_sphere_stable),
     Meta::extreme(
         "hit_sphere_stable",
         "far-small-sphere",
         "a unit sphere 10⁴ away: t within 16 ulp of the distance, computed in f64 by hand's formula",
     )
-    .points(2),
-    Meta::unit("hit_plane", "a plane n·p = offset from both sides and a parallel ray"),
+    .points(2) => far_small_sphere(),
+    Meta::unit("hit_plane", "a plane n·p = offset from both sides and a parallel ray") => plane_cases(),
     Meta::unit(
         "closest_hit",
         "three spheres in scrambled order: the nearest wins and its index is the object id",
     )
-    .needs(&["02/hit_sphere_stable"]),
-];
-
-#[cfg(feature = "l02")]
-pub use code::run;
+    .needs(&["02/hit_sphere_stable"]) => closest_of_three(),
+}
 
 #[cfg(feature = "l02")]
 mod code {
-    use l02_ray_casting::{Group, hit_plane, hit_sphere_algebraic, hit_sphere_geometric, hit_sphere_stable};
+    pub(super) use l02_ray_casting::{
+        Group, hit_plane, hit_sphere_algebraic, hit_sphere_geometric, hit_sphere_stable,
+    };
     use raylab::scene::{Object, Shape};
     use raylab::{Float, Hit, Intersector, Interval, Ray, Vec3};
 
     use super::SPHERE_CAUSE;
     use crate::check::{CheckResult, close, close3, ensure, fail, maybe, num, vec3, wide};
-
-    pub fn run(name: &str) -> Option<CheckResult> {
-        Some(match name {
-            "hit_sphere_algebraic/unit" => sphere_cases(hit_sphere_algebraic),
-            "hit_sphere_geometric/unit" => sphere_cases(hit_sphere_geometric),
-            "hit_sphere_stable/unit" => sphere_cases(hit_sphere_stable),
-            "hit_sphere_stable/far-small-sphere" => far_small_sphere(),
-            "hit_plane/unit" => plane_cases(),
-            "closest_hit/unit" => closest_of_three(),
-            _ => return None,
-        })
-    }
 
     type SphereFn = fn(&Ray, Vec3, Float, Interval) -> Option<Hit>;
 
@@ -65,7 +55,7 @@ mod code {
     }
 
     /// Cases with answers by hand, unit sphere at the origin unless said.
-    fn sphere_cases(hit: SphereFn) -> CheckResult {
+    pub(super) fn sphere_cases(hit: SphereFn) -> CheckResult {
         let all = Interval::new(0.0, Float::INFINITY);
         let origin = Vec3::ZERO;
         // From z = 5 straight at the sphere: the near root t = 5 − 1 = 4, at (0, 0, 1), normal +z.
@@ -137,7 +127,7 @@ mod code {
     /// A unit sphere at distance D = 10⁴ along a generic direction, rays
     /// from the origin aimed at points inside its silhouette: t against the
     /// same quadratic solved in f64 (an independent, 2⁻²⁹-accurate answer).
-    fn far_small_sphere() -> CheckResult {
+    pub(super) fn far_small_sphere() -> CheckResult {
         let axis = Vec3::new(0.48, -0.6, -0.64); // unit: 0.2304 + 0.36 + 0.4096 = 1
         let distance: Float = 1.0e4;
         let center = axis * distance;
@@ -186,7 +176,7 @@ mod code {
         tca - ((1.0 - closest2) / dd).sqrt()
     }
 
-    fn plane_cases() -> CheckResult {
+    pub(super) fn plane_cases() -> CheckResult {
         let all = Interval::new(0.0, Float::INFINITY);
         let show = |h: &Option<Hit>| maybe(h, |h| format!("t = {}, normal {}", num(h.t), vec3(h.normal)));
         // The plane y = 1 (n = +y, offset 1): from y = 5 downwards t = 4.
@@ -215,7 +205,7 @@ mod code {
         Ok("4 cases".into())
     }
 
-    fn closest_of_three() -> CheckResult {
+    pub(super) fn closest_of_three() -> CheckResult {
         let sphere = |z: Float| Object {
             shape: Shape::Sphere { center: Vec3::new(0.0, 0.0, z), radius: 1.0 },
             material: 0,

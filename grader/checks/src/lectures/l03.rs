@@ -3,77 +3,78 @@
 
 use crate::check::Meta;
 
-pub const CHECKS: &[Meta] = &[
+declare_checks! {
+    "l03";
     Meta::unit(
         "hit_slabs",
         "the span inside a box: generic rays both ways, from inside, misses, an edge touch",
-    ),
+    ) => slabs_cases(hit_slabs),
     Meta::extreme(
         "hit_slabs",
         "axis-parallel-rays",
         "axis-parallel rays, origins on a slab plane (±0 directions), flat boxes, edges and corners, and \
             4,000 rays against exact integer arithmetic: no false misses and never NaN",
-    ),
+    ) => slabs_extreme(hit_slabs),
     Meta::unit("hit_box", "the face hit and its normal on all six faces, from outside and from inside")
-        .needs(&["03/hit_slabs"]),
+        .needs(&["03/hit_slabs"]) => box_cases(hit_box),
     Meta::unit(
         "inside_crossings",
         "even–odd: convex, concave, pentagram, test rays through vertices, shared edges",
-    ),
-    Meta::unit("winding_number", "signed crossings: orientation, pentagram (2), vertices on the test ray"),
-    Meta::unit("newell_normal", "Newell's normal is twice the area along the counter-clockwise normal"),
+    ) => crossings_cases(inside_crossings),
+    Meta::unit("winding_number", "signed crossings: orientation, pentagram (2), vertices on the test ray")
+        => winding_cases(winding_number),
+    Meta::unit("newell_normal", "Newell's normal is twice the area along the counter-clockwise normal")
+        => newell_cases(newell_normal),
     Meta::unit(
         "hit_polygon",
         "squares in the three axis planes from front and back, a tilted quad, degenerate ones",
     )
-    .needs(&["03/newell_normal", "03/inside_crossings", "02/hit_plane"]),
-    Meta::unit("hit_triangle_cramer", "t and (β, γ) at vertices, inside, from behind, misses, parallel rays"),
+    .needs(&["03/newell_normal", "03/inside_crossings", "02/hit_plane"]) => polygon_cases(hit_polygon),
+    Meta::unit("hit_triangle_cramer", "t and (β, γ) at vertices, inside, from behind, misses, parallel rays")
+        => triangle_cases(hit_triangle_cramer),
     Meta::unit(
         "hit_triangle_moller_trumbore",
         "t and (β, γ) at vertices, inside, from behind, misses, parallel rays",
-    ),
+    ) => triangle_cases(hit_triangle_moller_trumbore),
     Meta::unit(
         "edge_function",
         "e(p, q) = p.x·q.y − p.y·q.x, exactly antisymmetric, its sign decided when it rounds to 0",
-    ),
+    ) => edge_cases(edge_function),
     Meta::unit(
         "hit_triangle_watertight",
         "t and (β, γ) at vertices, inside, from behind, misses, parallel rays",
     )
-    .needs(&["03/edge_function"]),
+    .needs(&["03/edge_function"]) => triangle_cases(hit_triangle_watertight),
     Meta::extreme(
         "hit_triangle_watertight",
         "no-leaks",
         "closed meshes, rays from inside aimed exactly at every vertex and edge: zero leaks",
     )
-    .needs(&["03/edge_function"]),
+    .needs(&["03/edge_function"]) => triangle_no_leaks(hit_triangle_watertight),
     Meta::unit(
         "interpolate_normal",
         "the blend (1 − β − γ)n₀ + βn₁ + γn₂, normalised; zero (not NaN) when it cancels",
-    ),
+    ) => interpolate_cases(interpolate_normal),
     Meta::unit(
         "hit_triangle",
         "the hit record: normal against the ray, front_face, uv = (β, γ), shading normals",
     )
-    .needs(&["03/hit_triangle_watertight", "03/interpolate_normal"]),
+    .needs(&["03/hit_triangle_watertight", "03/interpolate_normal"]) => hit_triangle_cases(hit_triangle),
     Meta::unit("hit_mesh", "the closest triangle whatever the order, mesh uvs and normals interpolated")
-        .needs(&["03/hit_triangle"]),
+        .needs(&["03/hit_triangle"]) => mesh_cases(hit_mesh),
     Meta::extreme(
         "hit_mesh",
         "no-leaks",
         "closed meshes, rays from inside aimed at every vertex and edge: all hit",
     )
-    .needs(&["03/hit_triangle"]),
-];
-
-#[cfg(feature = "l03")]
-pub use code::run;
+    .needs(&["03/hit_triangle"]) => mesh_no_leaks(hit_mesh),
+}
 
 #[cfg(feature = "l03")]
 #[allow(clippy::result_large_err)] // Failure is check.rs's report, returned by value as in every lecture
 #[allow(clippy::unnecessary_cast)] // widening Float to f64 for references is the identity in an f64 build
 mod code {
-    use l03_polygons_triangles::{
+    pub(super) use l03_polygons_triangles::{
         TriangleHit, edge_function, hit_box, hit_mesh, hit_polygon, hit_slabs, hit_triangle,
         hit_triangle_cramer, hit_triangle_moller_trumbore, hit_triangle_watertight, inside_crossings,
         interpolate_normal, newell_normal, winding_number,
@@ -85,28 +86,6 @@ mod code {
 
     use crate::check::{CheckResult, Failure, close, close3, ensure, fail, maybe, num, vec3};
     use crate::exact::exact_hits;
-
-    pub fn run(name: &str) -> Option<CheckResult> {
-        Some(match name {
-            "hit_slabs/unit" => slabs_cases(hit_slabs),
-            "hit_slabs/axis-parallel-rays" => slabs_extreme(hit_slabs),
-            "hit_box/unit" => box_cases(hit_box),
-            "inside_crossings/unit" => crossings_cases(inside_crossings),
-            "winding_number/unit" => winding_cases(winding_number),
-            "newell_normal/unit" => newell_cases(newell_normal),
-            "hit_polygon/unit" => polygon_cases(hit_polygon),
-            "hit_triangle_cramer/unit" => triangle_cases(hit_triangle_cramer),
-            "hit_triangle_moller_trumbore/unit" => triangle_cases(hit_triangle_moller_trumbore),
-            "edge_function/unit" => edge_cases(edge_function),
-            "hit_triangle_watertight/unit" => triangle_cases(hit_triangle_watertight),
-            "hit_triangle_watertight/no-leaks" => triangle_no_leaks(hit_triangle_watertight),
-            "interpolate_normal/unit" => interpolate_cases(interpolate_normal),
-            "hit_triangle/unit" => hit_triangle_cases(hit_triangle),
-            "hit_mesh/unit" => mesh_cases(hit_mesh),
-            "hit_mesh/no-leaks" => mesh_no_leaks(hit_mesh),
-            _ => return None,
-        })
-    }
 
     pub(super) type SlabsFn = fn(&Ray, Vec3, Vec3, Interval) -> Option<(Float, Float)>;
     pub(super) type BoxFn = fn(&Ray, Vec3, Vec3, Interval) -> Option<Hit>;
@@ -1341,7 +1320,7 @@ mod tests {
 
     use std::cell::Cell;
 
-    use l03_polygons_triangles::{
+    pub(super) use l03_polygons_triangles::{
         TriangleHit, dominant_axis, edge_function, hit_slabs, hit_triangle, hit_triangle_moller_trumbore,
         hit_triangle_watertight, inside_crossings, interpolate_normal, newell_normal, winding_number,
     };
@@ -1349,12 +1328,11 @@ mod tests {
     use raylab::scene::Mesh;
     use raylab::{Float, Hit, Interval, Ray, Vec2, Vec3};
 
-    use super::CHECKS;
     use super::code::*;
 
     #[test]
     fn every_declared_check_passes_on_the_reference() {
-        crate::check::testing::every_check_passes(CHECKS, run);
+        crate::check::testing::every_check_passes(super::CHECKS, super::run);
     }
 
     /// The slab method with switches for the classic mistakes.

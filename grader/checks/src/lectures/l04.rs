@@ -5,63 +5,64 @@ use crate::check::Meta;
 
 const CAPPED_NEEDS: &[&str] = &["04/slab_z_span", "04/first_crossing"];
 
-pub const CHECKS: &[Meta] = &[
-    Meta::unit("slab_z_span", "the span of t in 0 ≤ z ≤ 1, ordered, and parallel rays inside or outside"),
+declare_checks! {
+    "l04";
+    Meta::unit("slab_z_span", "the span of t in 0 ≤ z ≤ 1, ordered, and parallel rays inside or outside")
+        => span_cases(slab_z_span),
     Meta::unit(
         "first_crossing",
         "the later entry or the earlier exit of two spans, and which surface made \
         it",
-    ),
+    ) => crossing_cases(first_crossing),
     Meta::unit(
         "hit_cylinder",
         "side and caps from outside and inside, axis-parallel, in a cap plane, tangent, 1,000 rays through \
             the rims",
     )
-    .needs(CAPPED_NEEDS),
+    .needs(CAPPED_NEEDS) => cylinder_cases(hit_cylinder),
     Meta::extreme(
         "hit_cylinder",
         "far-origin",
         "origins 10³ and 10⁷ radii away (what a squashing transform makes): t within 4ε·t of the f64 root",
     )
-    .needs(CAPPED_NEEDS),
+    .needs(CAPPED_NEEDS) => far_origin(hit_cylinder, Quadric::Cylinder),
     Meta::unit(
         "hit_cone",
         "side, base, apex (a normal, not NaN), steep rays, rays parallel to a side line, 1,000 rays through \
             the rim",
     )
-    .needs(CAPPED_NEEDS),
+    .needs(CAPPED_NEEDS) => cone_cases(hit_cone),
     Meta::extreme("hit_cone", "far-origin", "origins 10³ and 10⁷ away: t within 4ε·t of the f64 root")
-        .needs(CAPPED_NEEDS),
+        .needs(CAPPED_NEEDS) => far_origin(hit_cone, Quadric::Cone),
     Meta::unit(
         "parametric_normal",
         "∂s/∂α × ∂s/∂β normalised: sphere and ellipsoid, the order of factors, \
         a pole",
-    ),
-    Meta::unit("ray_to_object", "origin as a point, direction as a vector, not renormalised: t is shared"),
-    Meta::unit("normal_to_world", "(M⁻¹)ᵀn normalised for a rotated, squashed, moved object, and a mirror"),
+    ) => parametric_cases(parametric_normal),
+    Meta::unit("ray_to_object", "origin as a point, direction as a vector, not renormalised: t is shared")
+        => to_object_cases(ray_to_object),
+    Meta::unit("normal_to_world", "(M⁻¹)ᵀn normalised for a rotated, squashed, moved object, and a mirror")
+        => normal_cases(normal_to_world),
     Meta::unit(
         "hit_transformed",
         "a squashed sphere: world t, world point, the inverse-transpose normal faced against the ray, uv \
             and ids kept",
     )
-    .needs(&["04/ray_to_object", "04/normal_to_world"]),
+    .needs(&["04/ray_to_object", "04/normal_to_world"]) => transformed_cases(hit_transformed),
     Meta::extreme(
         "hit_transformed",
         "extreme-scale",
         "a sphere scaled 1e-3 : 1 : 1e3: t in world units (4 rays by hand) and normals within 1e-4 rad of \
             the f64 ellipsoid (4,000 head-on rays)",
     )
-    .needs(&["04/ray_to_object", "04/normal_to_world"]),
-];
-
-#[cfg(feature = "l04")]
-pub use code::run;
+    .needs(&["04/ray_to_object", "04/normal_to_world"]) => extreme_scale(hit_transformed),
+}
 
 #[cfg(feature = "l04")]
 #[allow(clippy::result_large_err)] // Failure is check.rs's report, returned by value as in every lecture
 #[allow(clippy::unnecessary_cast)] // widening Float to f64 for references is the identity in an f64 build
 mod code {
-    use l04_quadrics_transforms::{
+    pub(super) use l04_quadrics_transforms::{
         first_crossing, hit_cone, hit_cylinder, hit_transformed, normal_to_world, parametric_normal,
         ray_to_object, slab_z_span,
     };
@@ -71,23 +72,6 @@ mod code {
     use raylab::{Float, Hit, Interval, Mat4, Ray, Vec2, Vec3};
 
     use crate::check::{CheckResult, Failure, close, close3, ensure, fail, maybe, num, vec3};
-
-    pub fn run(name: &str) -> Option<CheckResult> {
-        Some(match name {
-            "slab_z_span/unit" => span_cases(slab_z_span),
-            "first_crossing/unit" => crossing_cases(first_crossing),
-            "hit_cylinder/unit" => cylinder_cases(hit_cylinder),
-            "hit_cylinder/far-origin" => far_origin(hit_cylinder, Quadric::Cylinder),
-            "hit_cone/unit" => cone_cases(hit_cone),
-            "hit_cone/far-origin" => far_origin(hit_cone, Quadric::Cone),
-            "parametric_normal/unit" => parametric_cases(parametric_normal),
-            "ray_to_object/unit" => to_object_cases(ray_to_object),
-            "normal_to_world/unit" => normal_cases(normal_to_world),
-            "hit_transformed/unit" => transformed_cases(hit_transformed),
-            "hit_transformed/extreme-scale" => extreme_scale(hit_transformed),
-            _ => return None,
-        })
-    }
 
     pub(super) type SpanFn = fn(Float, Float) -> Option<(Float, Float)>;
     pub(super) type CrossingFn = fn((Float, Float), (Float, Float), Interval) -> Option<(Float, bool)>;
@@ -1081,16 +1065,15 @@ mod tests {
 
     use crate::check::testing::caught;
 
-    use l04_quadrics_transforms::{first_crossing, normal_to_world, ray_to_object, slab_z_span};
+    pub(super) use l04_quadrics_transforms::{first_crossing, normal_to_world, ray_to_object, slab_z_span};
     use raylab::scene::Transform;
     use raylab::{Float, Hit, Interval, Ray, Vec3};
 
-    use super::CHECKS;
     use super::code::*;
 
     #[test]
     fn every_declared_check_passes_on_the_reference() {
-        crate::check::testing::every_check_passes(CHECKS, run);
+        crate::check::testing::every_check_passes(super::CHECKS, super::run);
     }
 
     #[test]

@@ -4,57 +4,57 @@
 
 use crate::check::Meta;
 
-pub const CHECKS: &[Meta] = &[
+declare_checks! {
+    "l05";
     Meta::unit(
         "concentric_disk",
         "square rings go to circles of the same half side, the centre and the sides by hand, both branches",
-    ),
+    ) => disk_cases(concentric_disk),
     Meta::unit(
         "sample_light",
         "rect samples at corner + u·edges, ball samples on the silhouette disc, point lights",
     )
-    .needs(&["05/illuminate", "05/concentric_disk"]),
-    Meta::unit("lambert", "(N·L)⁺ head-on, at 60°, grazing and from behind"),
-    Meta::unit("distance_falloff", "1/(c + l·d + q·d²) at d = 2 by hand; 0, never ∞, at and near d = 0"),
+    .needs(&["05/illuminate", "05/concentric_disk"]) => sample_light_cases(sample_light),
+    Meta::unit("lambert", "(N·L)⁺ head-on, at 60°, grazing and from behind") => lambert_cases(lambert),
+    Meta::unit("distance_falloff", "1/(c + l·d + q·d²) at d = 2 by hand; 0, never ∞, at and near d = 0")
+        => falloff_cases(distance_falloff),
     Meta::unit(
         "spot_falloff",
         "1 inside, 0 outside, smoothstep of the cosines between, a hard edge when inner = outer",
-    ),
+    ) => spot_cases(spot_falloff),
     Meta::unit(
         "illuminate",
         "directional, point, spot and area lights: L toward the light, d, attenuated intensity",
     )
-    .needs(&["05/distance_falloff", "05/spot_falloff"]),
+    .needs(&["05/distance_falloff", "05/spot_falloff"]) => illuminate_cases(illuminate),
     Meta::unit(
         "phong_specular",
         "(R·V)ⁿ: the peak in the mirror direction, (√½)ⁿ seen along N, nothing from behind",
     )
-    .needs(&["05/reflect"]),
+    .needs(&["05/reflect"]) => phong_cases(phong_specular),
     Meta::unit(
         "blinn_specular",
         "(N·H)ⁿ: the peak at H = N, cos(22.5°)ⁿ seen along N, l = −v gives 0, not NaN",
-    ),
-    Meta::unit("reflect", "r = v − 2(v·n)n at 45°, normal incidence, along the surface, non-unit v"),
+    ) => blinn_cases(blinn_specular),
+    Meta::unit("reflect", "r = v − 2(v·n)n at 45°, normal incidence, along the surface, non-unit v")
+        => reflect_cases(reflect),
     Meta::unit(
         "shade_light",
         "(k_d(N·L)⁺ + k_s·spec) ⊙ I_L: colours by channel, Phong or Blinn as the material says",
     )
-    .needs(&["05/lambert", "05/phong_specular", "05/blinn_specular"]),
+    .needs(&["05/lambert", "05/phong_specular", "05/blinn_specular"]) => shade_light_cases(shade_light),
     Meta::unit(
         "shade_local",
         "ambient plus every light: one light at 60°, two lights, none, from behind, a point light",
     )
-    .needs(&["05/illuminate", "05/shade_light", "05/lambert"]),
-];
-
-#[cfg(feature = "l05")]
-pub use code::run;
+    .needs(&["05/illuminate", "05/shade_light", "05/lambert"]) => shade_local_cases(shade_local),
+}
 
 #[cfg(feature = "l05")]
 // `Failure` is large (its optional images); see check.rs.
 #[allow(clippy::result_large_err)]
 mod code {
-    use l05_shading::{
+    pub(super) use l05_shading::{
         LightSample, blinn_specular, concentric_disk, distance_falloff, illuminate, lambert, phong_specular,
         reflect, sample_light, shade_light, shade_local, spot_falloff,
     };
@@ -62,23 +62,6 @@ mod code {
     use raylab::{BLACK, Color, Float, Hit, Ray, Vec2, Vec3, WHITE, radians};
 
     use crate::check::{CheckResult, close, close3, ensure, num, vec3};
-
-    pub fn run(name: &str) -> Option<CheckResult> {
-        Some(match name {
-            "concentric_disk/unit" => disk_cases(concentric_disk),
-            "sample_light/unit" => sample_light_cases(sample_light),
-            "lambert/unit" => lambert_cases(lambert),
-            "distance_falloff/unit" => falloff_cases(distance_falloff),
-            "spot_falloff/unit" => spot_cases(spot_falloff),
-            "illuminate/unit" => illuminate_cases(illuminate),
-            "phong_specular/unit" => phong_cases(phong_specular),
-            "blinn_specular/unit" => blinn_cases(blinn_specular),
-            "reflect/unit" => reflect_cases(reflect),
-            "shade_light/unit" => shade_light_cases(shade_light),
-            "shade_local/unit" => shade_local_cases(shade_local),
-            _ => return None,
-        })
-    }
 
     pub(super) type DiskFn = fn(Vec2) -> Vec2;
     pub(super) type SampleFn = fn(&Light, Vec3, Vec2) -> LightSample;
@@ -874,10 +857,9 @@ mod code {
 #[cfg(all(test, feature = "l05"))]
 #[allow(clippy::result_large_err)]
 mod tests {
-    use super::CHECKS;
     use super::code::*;
     use crate::check::testing::caught;
-    use l05_shading::{
+    pub(super) use l05_shading::{
         LightSample, blinn_specular, distance_falloff, illuminate, lambert, phong_specular, reflect,
         shade_light,
     };
@@ -886,7 +868,7 @@ mod tests {
 
     #[test]
     fn every_declared_check_passes_on_the_reference() {
-        crate::check::testing::every_check_passes(CHECKS, run);
+        crate::check::testing::every_check_passes(super::CHECKS, super::run);
     }
 
     #[test]

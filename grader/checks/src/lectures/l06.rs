@@ -8,51 +8,54 @@
 
 use crate::check::Meta;
 
-pub const CHECKS: &[Meta] = &[
+declare_checks! {
+    "l06";
     Meta::unit(
         "offset_origin",
         "along ±n to the side dir leaves to, by a few ulp of p and of the ray's origin, never zero",
-    ),
+    ) => offset_cases(offset_origin),
     Meta::extreme(
         "offset_origin",
         "large-coordinates",
         "spheres at 10⁴ and 10⁵ and a floor seen from 860 away: no shadow ray starts inside, moves ≤ 97 ulp",
-    ),
-    Meta::unit("offset_origin_fixed_t", "the naive method: p + 10⁻⁴·dir"),
-    Meta::unit("offset_origin_fixed_normal", "the naive method: p + 10⁻⁴·n, whatever dir"),
+    ) => large_coordinates(offset_origin),
+    Meta::unit("offset_origin_fixed_t", "the naive method: p + 10⁻⁴·dir")
+        => fixed_t_cases(offset_origin_fixed_t),
+    Meta::unit("offset_origin_fixed_normal", "the naive method: p + 10⁻⁴·n, whatever dir")
+        => fixed_normal_cases(offset_origin_fixed_normal),
     Meta::unit(
         "occluded",
         "a blocker between, beside, beyond the light and behind the point; one any-hit shadow ray",
-    ),
+    ) => occluded_cases(occluded),
     Meta::unit(
         "transmittance",
         "Π k_t over the surfaces crossed: a sphere ¼, a plane ½, by channel, opaque stops, the light nearer",
     )
-    .needs(&["06/offset_origin"]),
+    .needs(&["06/offset_origin"]) => transmittance_cases(transmittance),
     Meta::unit("visibility", "opaque or filtered by mode, from just off a floor seen from far away")
-        .needs(&["06/offset_origin", "06/occluded", "06/transmittance"]),
+        .needs(&["06/offset_origin", "06/occluded", "06/transmittance"]) => visibility_cases(visibility),
     Meta::unit(
         "shade_with_shadows",
         "under and beside a ball, a transparent ball, lights without shadows or behind: values and ray counts",
     )
-    .needs(&["05/illuminate", "05/shade_light", "06/visibility", "06/shade_area_light"]),
-    Meta::unit("stratified", "n samples, one per cell of the √n × √n grid or the n strips, row by row, in [0, 1)²"),
+    .needs(&["05/illuminate", "05/shade_light", "06/visibility", "06/shade_area_light"])
+        => shade_cases(shade_with_shadows),
+    Meta::unit("stratified", "n samples, one per cell of the √n × √n grid or the n strips, row by row, in [0, 1)²")
+        => stratified_cases(stratified),
     Meta::unit(
         "shade_area_light",
         "the average over n samples of V·(N·L) against the same points in f64: umbra, penumbra, half below",
     )
-    .needs(&["05/sample_light", "05/shade_light", "06/visibility", "06/stratified"]),
-];
-
-#[cfg(feature = "l06")]
-pub use code::run;
+    .needs(&["05/sample_light", "05/shade_light", "06/visibility", "06/stratified"])
+        => area_cases(shade_area_light),
+}
 
 #[cfg(feature = "l06")]
 // `Failure` is large (its optional images); see check.rs.
 #[allow(clippy::result_large_err)]
 mod code {
-    use l05_shading::LightSample;
-    use l06_shadows::{
+    pub(super) use l05_shading::LightSample;
+    pub(super) use l06_shadows::{
         ShadowMode, ShadowSettings, Surface, occluded, offset_origin, offset_origin_fixed_normal,
         offset_origin_fixed_t, point_seed, shade_area_light, shade_with_shadows, stratified, transmittance,
         visibility,
@@ -64,22 +67,6 @@ mod code {
     use std::sync::atomic::{AtomicUsize, Ordering};
 
     use crate::check::{CheckResult, Failure, close3, ensure, num, vec3, wide, wide3};
-
-    pub fn run(name: &str) -> Option<CheckResult> {
-        Some(match name {
-            "offset_origin/unit" => offset_cases(offset_origin),
-            "offset_origin/large-coordinates" => large_coordinates(offset_origin),
-            "offset_origin_fixed_t/unit" => fixed_t_cases(offset_origin_fixed_t),
-            "offset_origin_fixed_normal/unit" => fixed_normal_cases(offset_origin_fixed_normal),
-            "occluded/unit" => occluded_cases(occluded),
-            "transmittance/unit" => transmittance_cases(transmittance),
-            "visibility/unit" => visibility_cases(visibility),
-            "shade_with_shadows/unit" => shade_cases(shade_with_shadows),
-            "stratified/unit" => stratified_cases(stratified),
-            "shade_area_light/unit" => area_cases(shade_area_light),
-            _ => return None,
-        })
-    }
 
     pub(super) type OffsetFn = fn(Vec3, Vec3, Vec3, Vec3) -> Vec3;
     pub(super) type OccludedFn = fn(&dyn Intersector, Vec3, &LightSample) -> bool;
@@ -1081,11 +1068,10 @@ mod code {
 #[cfg(all(test, feature = "l06"))]
 #[allow(clippy::result_large_err)]
 mod tests {
-    use super::CHECKS;
     use super::code::*;
     use crate::check::testing::caught;
-    use l05_shading::{LightSample, illuminate, sample_light, shade_light};
-    use l06_shadows::{
+    pub(super) use l05_shading::{LightSample, illuminate, sample_light, shade_light};
+    pub(super) use l06_shadows::{
         LIGHT_MARGIN, ShadowMode, ShadowSettings, Surface, occluded, offset_origin, point_seed,
         shade_area_light, stratified, transmittance, visibility,
     };
@@ -1096,7 +1082,7 @@ mod tests {
 
     #[test]
     fn every_declared_check_passes_on_the_reference() {
-        crate::check::testing::every_check_passes(CHECKS, run);
+        crate::check::testing::every_check_passes(super::CHECKS, super::run);
     }
 
     const EPS: Float = Float::EPSILON;

@@ -3,62 +3,48 @@
 
 use crate::check::Meta;
 
-pub const CHECKS: &[Meta] = &[
+declare_checks! {
+    "l07";
     Meta::unit(
         "schlick",
         "R₀ at normal incidence, (1 − cos θ)⁵ from air, cos θ_t from inside glass, R = 1 under TIR",
-    ),
+    ) => schlick_cases(schlick),
     Meta::unit(
         "fresnel_dielectric",
         "0.04 at normal incidence, the closed form at 45°, Brewster's angle, TIR, and the f64 sine/tangent form",
-    ),
+    ) => fresnel_cases(fresnel_dielectric),
     Meta::unit("mirror_direction", "mirror rays by hand: 3-4-5, 45°, normal incidence, non-unit directions")
-        .needs(&["05/reflect"]),
+        .needs(&["05/reflect"]) => mirror_cases(mirror_direction),
     Meta::unit(
         "interface",
         "entering and leaving a sphere: the normal facing the ray and which index is which",
-    ),
-    Meta::unit("refract", "Snell by hand at 30°, normal incidence, η = 1, TIR, and a sweep against f64"),
+    ) => interface_cases(interface),
+    Meta::unit("refract", "Snell by hand at 30°, normal incidence, η = 1, TIR, and a sweep against f64")
+        => refract_cases(refract),
     Meta::extreme(
         "refract",
         "critical-angle",
         "θ_c ± 0.001° and normal incidence: finite, None exactly when sin²θ_t ≥ 1, even when it rounds to 1",
-    ),
+    ) => critical_angle(refract),
     Meta::extreme(
         "refract",
         "tiny-glass-sphere",
         "a glass bead of radius 10⁻⁵: each refracted ray finds the far side and leaves where f64 says",
     )
-    .needs(&["02/hit_sphere_stable", "07/interface"]),
-];
-
-#[cfg(feature = "l07")]
-pub use code::run;
+    .needs(&["02/hit_sphere_stable", "07/interface"]) => tiny_glass_sphere(refract, interface),
+}
 
 #[cfg(feature = "l07")]
 // `Failure` is large (its optional images); see check.rs.
 #[allow(clippy::result_large_err)]
 mod code {
-    use l02_ray_casting::hit_sphere_stable;
-    use l07_reflection_refraction::{
+    pub(super) use l02_ray_casting::hit_sphere_stable;
+    pub(super) use l07_reflection_refraction::{
         Interface, fresnel_dielectric, interface, mirror_direction, refract, schlick,
     };
     use raylab::{Float, Hit, Interval, Ray, Vec3};
 
     use crate::check::{CheckResult, close, close3, ensure, fail, maybe, num, vec3, wide, wide3};
-
-    pub fn run(name: &str) -> Option<CheckResult> {
-        Some(match name {
-            "schlick/unit" => schlick_cases(schlick),
-            "fresnel_dielectric/unit" => fresnel_cases(fresnel_dielectric),
-            "mirror_direction/unit" => mirror_cases(mirror_direction),
-            "interface/unit" => interface_cases(interface),
-            "refract/unit" => refract_cases(refract),
-            "refract/critical-angle" => critical_angle(refract),
-            "refract/tiny-glass-sphere" => tiny_glass_sphere(refract, interface),
-            _ => return None,
-        })
-    }
 
     pub(super) type FresnelFn = fn(Float, Float, Float) -> Float;
     pub(super) type MirrorFn = fn(Vec3, Vec3) -> Vec3;
@@ -683,15 +669,14 @@ mod code {
 #[cfg(all(test, feature = "l07"))]
 #[allow(clippy::result_large_err)]
 mod tests {
-    use super::CHECKS;
     use super::code::*;
     use crate::check::testing::caught;
-    use l07_reflection_refraction::{Interface, interface, refract};
+    pub(super) use l07_reflection_refraction::{Interface, interface, refract};
     use raylab::{Float, Hit, Vec3};
 
     #[test]
     fn every_declared_check_passes_on_the_reference() {
-        crate::check::testing::every_check_passes(CHECKS, run);
+        crate::check::testing::every_check_passes(super::CHECKS, super::run);
     }
 
     // Planted mistakes, each as a student might write it.

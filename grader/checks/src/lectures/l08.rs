@@ -19,49 +19,39 @@ const TRACE_NEEDS: &[&str] = &[
     "07/fresnel_dielectric",
 ];
 
-pub const CHECKS: &[Meta] = &[
+declare_checks! {
+    "l08";
     Meta::unit(
         "trace_ray",
         "by hand: a miss, a mirror, facing mirrors stopped by depth and by weight, total internal \
          reflection, Fresnel's 4 % at normal incidence",
     )
-    .needs(TRACE_NEEDS),
+    .needs(TRACE_NEEDS) => trace_cases(trace),
     Meta::extreme(
         "trace_ray",
         "tiny-glass-sphere",
         "rays through a glass ball of radius 10⁻⁵: each enters and finds its exit (two refracted rays) \
          and sees the wall behind",
     )
-    .needs(TRACE_NEEDS),
+    .needs(TRACE_NEEDS) => tiny_glass_sphere(trace),
     Meta::unit(
         "render",
         "each pixel is trace of 01's pixel_ray at depth 0, weight 1; one primary ray per pixel",
     )
-    .needs(&["08/trace_ray", "01/PerspectiveCamera::generate_ray", "01/screen_coords"]),
-];
-
-#[cfg(feature = "l08")]
-pub use code::run;
+    .needs(&["08/trace_ray", "01/PerspectiveCamera::generate_ray", "01/screen_coords"])
+        => render_cases(render),
+}
 
 #[cfg(feature = "l08")]
 mod code {
-    use l01_transforms::Camera;
-    use l04_quadrics_transforms::BruteForce;
-    use l08_ray_tree::{TraceSettings, World, render, trace};
+    pub(super) use l01_transforms::Camera;
+    pub(super) use l04_quadrics_transforms::BruteForce;
+    pub(super) use l08_ray_tree::{TraceSettings, World, render, trace};
     use raylab::scene::{self, Light, LightKind, Material, Object, Shape};
     use raylab::stats::{Counter, RayStats, measure};
     use raylab::{Color, Float, Image, Ray, Scene, Vec3};
 
     use crate::check::{CheckResult, close, ensure, fail, vec3};
-
-    pub fn run(name: &str) -> Option<CheckResult> {
-        Some(match name {
-            "trace_ray/unit" => trace_cases(trace),
-            "trace_ray/tiny-glass-sphere" => tiny_glass_sphere(trace),
-            "render/unit" => render_cases(render),
-            _ => return None,
-        })
-    }
 
     pub(super) type TraceFn = fn(&World, &Ray, u32, Float, &TraceSettings) -> Color;
     pub(super) type RenderFn = fn(&World, &Camera, u32, u32, &TraceSettings) -> (Image, RayStats);
@@ -607,19 +597,18 @@ mod code {
 #[cfg(all(test, feature = "l08"))]
 mod tests {
     use super::code::*;
-    use super::*;
-    use l01_transforms::Camera;
-    use l05_shading::shade_local;
-    use l06_shadows::{ShadowSettings, Surface, offset_origin, shade_with_shadows};
-    use l07_reflection_refraction::{fresnel_dielectric, interface, mirror_direction, refract};
-    use l08_ray_tree::{TraceSettings, World, trace};
+    pub(super) use l01_transforms::Camera;
+    pub(super) use l05_shading::shade_local;
+    pub(super) use l06_shadows::{ShadowSettings, Surface, offset_origin, shade_with_shadows};
+    pub(super) use l07_reflection_refraction::{fresnel_dielectric, interface, mirror_direction, refract};
+    pub(super) use l08_ray_tree::{TraceSettings, World, trace};
     use raylab::render::render_image;
     use raylab::stats::{Counter, RayStats, count};
     use raylab::{BLACK, Color, Float, Image, Interval, Ray};
 
     #[test]
     fn every_declared_check_passes_on_the_reference() {
-        crate::check::testing::every_check_passes(CHECKS, run);
+        crate::check::testing::every_check_passes(super::CHECKS, super::run);
     }
 
     /// The mistakes planted in a copy of the reference tracer.

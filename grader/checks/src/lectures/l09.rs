@@ -21,41 +21,46 @@ const BVH_NEEDS: &[&str] = &[
     "09/sah_split",
 ];
 
-pub const CHECKS: &[Meta] = &[
-    Meta::unit("Aabb::union", "unions by hand, in both orders, and the empty box as the identity"),
-    Meta::unit("Aabb::union_point", "a point outside, inside, and added to the empty box"),
-    Meta::unit("Aabb::surface_area", "2(dₓd_y + d_yd_z + d_zdₓ) by hand; flat, segment, point, empty and infinite boxes"),
-    Meta::unit("Aabb::hit", "slab spans by hand: through, beside, behind, beyond the range, from inside, reversed"),
+declare_checks! {
+    "l09";
+    Meta::unit("Aabb::union", "unions by hand, in both orders, and the empty box as the identity")
+        => union_cases(Aabb::union),
+    Meta::unit("Aabb::union_point", "a point outside, inside, and added to the empty box")
+        => union_point_cases(Aabb::union_point),
+    Meta::unit("Aabb::surface_area", "2(dₓd_y + d_yd_z + d_zdₓ) by hand; flat, segment, point, empty and infinite boxes")
+        => area_cases(Aabb::surface_area),
+    Meta::unit("Aabb::hit", "slab spans by hand: through, beside, behind, beyond the range, from inside, reversed")
+        => slab_cases(Aabb::hit),
     Meta::extreme(
         "Aabb::hit",
         "slab-boundaries",
         "axis-parallel rays with ±0 components starting on a slab plane, flat boxes across and along: no \
          false miss, never NaN",
-    ),
-    Meta::unit("sphere_bounds", "c ± r on every axis, holding the exact sphere (outward rounding)"),
-    Meta::unit("triangle_bounds", "the min and max of the three corners, flat in an axis plane"),
+    ) => slab_boundaries(Aabb::hit),
+    Meta::unit("sphere_bounds", "c ± r on every axis, holding the exact sphere (outward rounding)")
+        => sphere_cases(sphere_bounds),
+    Meta::unit("triangle_bounds", "the min and max of the three corners, flat in an axis plane")
+        => triangle_cases(triangle_bounds),
     Meta::unit(
         "transform_bounds",
         "a rotated, scaled and moved box holds the images of all 8 corners, computed in f64",
-    ),
-    Meta::unit("sah_split", "binned SAH costs by hand: two clusters, neighbours together, no split"),
+    ) => transform_cases(transform_bounds),
+    Meta::unit("sah_split", "binned SAH costs by hand: two clusters, neighbours together, no split")
+        => sah_cases(sah_split),
     Meta::unit(
         "Bvh::closest_hit",
         "the hit brute force finds, on a row of spheres listed far first and 3000 random rays in a mixed scene",
     )
-    .needs(BVH_NEEDS),
+    .needs(BVH_NEEDS) => closest_cases(|bvh, r, range| bvh.closest_hit(r, range)),
     Meta::extreme(
         "Bvh::closest_hit",
         "shared-edges",
         "rays from inside a closed icosphere at its every vertex and edge: each hits, as brute force does",
     )
-    .needs(BVH_NEEDS),
+    .needs(BVH_NEEDS) => shared_edges(|bvh, r, range| bvh.closest_hit(r, range)),
     Meta::unit("Bvh::any_hit", "true exactly when brute force finds a hit: random rays and ranges, blockers beyond the range")
-        .needs(BVH_NEEDS),
-];
-
-#[cfg(feature = "l09")]
-pub use code::run;
+        .needs(BVH_NEEDS) => any_cases(|bvh, r, range| bvh.any_hit(r, range)),
+}
 
 #[cfg(feature = "l09")]
 // Widening `Float` to f64 for exact comparisons is a cast in f32 builds and none in f64 ones.
@@ -63,8 +68,8 @@ pub use code::run;
 mod code {
     use std::sync::Arc;
 
-    use l04_quadrics_transforms::BruteForce;
-    use l09_acceleration::{
+    pub(super) use l04_quadrics_transforms::BruteForce;
+    pub(super) use l09_acceleration::{
         Aabb, BINS, Bin, Bvh, TRAVERSAL_COST, sah_split, sphere_bounds, transform_bounds, triangle_bounds,
     };
     use raylab::random::Rng;
@@ -72,24 +77,6 @@ mod code {
     use raylab::{Float, Hit, Intersector, Interval, Mat4, Ray, Vec3};
 
     use crate::check::{CheckResult, Failure, close, ensure, fail, maybe, num, vec3};
-
-    pub fn run(name: &str) -> Option<CheckResult> {
-        Some(match name {
-            "Aabb::union/unit" => union_cases(Aabb::union),
-            "Aabb::union_point/unit" => union_point_cases(Aabb::union_point),
-            "Aabb::surface_area/unit" => area_cases(Aabb::surface_area),
-            "Aabb::hit/unit" => slab_cases(Aabb::hit),
-            "Aabb::hit/slab-boundaries" => slab_boundaries(Aabb::hit),
-            "sphere_bounds/unit" => sphere_cases(sphere_bounds),
-            "triangle_bounds/unit" => triangle_cases(triangle_bounds),
-            "transform_bounds/unit" => transform_cases(transform_bounds),
-            "sah_split/unit" => sah_cases(sah_split),
-            "Bvh::closest_hit/unit" => closest_cases(|bvh, r, range| bvh.closest_hit(r, range)),
-            "Bvh::closest_hit/shared-edges" => shared_edges(|bvh, r, range| bvh.closest_hit(r, range)),
-            "Bvh::any_hit/unit" => any_cases(|bvh, r, range| bvh.any_hit(r, range)),
-            _ => return None,
-        })
-    }
 
     pub(super) type UnionFn = fn(Aabb, Aabb) -> Aabb;
     pub(super) type UnionPointFn = fn(Aabb, Vec3) -> Aabb;
@@ -961,18 +948,17 @@ mod code {
 #[allow(clippy::unnecessary_cast)] // as in `code`
 mod tests {
     use super::code::*;
-    use super::*;
     use crate::check::testing::caught;
-    use l09_acceleration::{
+    pub(super) use l09_acceleration::{
         Aabb, BINS, Bin, Bvh, TRAVERSAL_COST, sah_split, sphere_bounds, transform_bounds,
     };
-    use l09_acceleration::{Closest, Primitive, STACK_SIZE, WIDTH, Waiting};
+    pub(super) use l09_acceleration::{Closest, Primitive, STACK_SIZE, WIDTH, Waiting};
     use raylab::math::gamma;
     use raylab::{Float, Hit, Interval, Ray, Vec3};
 
     #[test]
     fn every_declared_check_passes_on_the_reference() {
-        crate::check::testing::every_check_passes(CHECKS, run);
+        crate::check::testing::every_check_passes(super::CHECKS, super::run);
     }
 
     #[test]

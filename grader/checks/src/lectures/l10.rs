@@ -3,27 +3,32 @@
 
 use crate::check::Meta;
 
-pub const CHECKS: &[Meta] = &[
+declare_checks! {
+    "l10";
     Meta::unit(
         "sphere_uv",
         "poles, the equator's axis points, the inverse of longitude and latitude, points off the sphere",
-    ),
-    Meta::unit("plane_uv", "perpendicular and skew axes, and a point off the plane, by hand"),
-    Meta::unit("triangle_uv", "the vertices' uvs at the corners, their mean at the centroid and on an edge"),
+    ) => sphere_cases(sphere_uv),
+    Meta::unit("plane_uv", "perpendicular and skew axes, and a point off the plane, by hand")
+        => plane_cases(plane_uv),
+    Meta::unit("triangle_uv", "the vertices' uvs at the corners, their mean at the centroid and on an edge")
+        => triangle_cases(triangle_uv),
     Meta::unit(
         "checker",
         "alternation across cell edges, the floor at negative coordinates, half-open cells",
-    ),
-    Meta::unit("checker_3d", "a solid board alternating across each face of a cube, at two scales"),
+    ) => checker_cases(checker),
+    Meta::unit("checker_3d", "a solid board alternating across each face of a cube, at two scales")
+        => checker_3d_cases(checker_3d),
     Meta::unit(
         "bilinear",
         "pixel centres, halfway means, wrapping edges and tiles, v upward, on a 4 × 2 image",
-    ),
-    Meta::unit("filter_weight", "box and tent by hand, their rims, NaN, and both integrating to 1"),
+    ) => bilinear_cases(bilinear),
+    Meta::unit("filter_weight", "box and tent by hand, their rims, NaN, and both integrating to 1")
+        => filter_cases(filter_weight),
     Meta::unit(
         "sample_offsets",
         "regular centres by hand; one jittered sample per cell; multi-jittered n-rooks; non-square counts",
-    ),
+    ) => sampling_cases(sample_offsets),
     Meta::unit(
         "render_supersampled",
         "one regular sample is 08's render; one primary ray per sample; a pixel under an edge converges to \
@@ -39,11 +44,8 @@ pub const CHECKS: &[Meta] = &[
         "08/render",
         "10/sample_offsets",
         "10/filter_weight",
-    ]),
-];
-
-#[cfg(feature = "l10")]
-pub use code::run;
+    ]) => supersampling_cases(render_supersampled),
+}
 
 #[cfg(feature = "l10")]
 // Widening `Float` to f64 for exact comparisons is a cast in f32 builds and none in f64 ones.
@@ -51,10 +53,10 @@ pub use code::run;
 mod code {
     use std::collections::HashSet;
 
-    use l01_transforms::Camera;
-    use l04_quadrics_transforms::BruteForce;
-    use l08_ray_tree::{TraceSettings, World};
-    use l10_textures_sampling::{
+    pub(super) use l01_transforms::Camera;
+    pub(super) use l04_quadrics_transforms::BruteForce;
+    pub(super) use l08_ray_tree::{TraceSettings, World};
+    pub(super) use l10_textures_sampling::{
         Filter, Pattern, bilinear, checker, checker_3d, filter_weight, plane_uv, render_supersampled,
         sample_offsets, sphere_uv, triangle_uv,
     };
@@ -65,21 +67,6 @@ mod code {
     use raylab::{Color, Float, Image, Scene, Vec2, Vec3};
 
     use crate::check::{CheckResult, Failure, ensure, fail, num, vec3};
-
-    pub fn run(name: &str) -> Option<CheckResult> {
-        Some(match name {
-            "sphere_uv/unit" => sphere_cases(sphere_uv),
-            "plane_uv/unit" => plane_cases(plane_uv),
-            "triangle_uv/unit" => triangle_cases(triangle_uv),
-            "checker/unit" => checker_cases(checker),
-            "checker_3d/unit" => checker_3d_cases(checker_3d),
-            "bilinear/unit" => bilinear_cases(bilinear),
-            "filter_weight/unit" => filter_cases(filter_weight),
-            "sample_offsets/unit" => sampling_cases(sample_offsets),
-            "render_supersampled/unit" => supersampling_cases(render_supersampled),
-            _ => return None,
-        })
-    }
 
     pub(super) type SphereUvFn = fn(Vec3) -> Vec2;
     pub(super) type PlaneUvFn = fn(Vec3, Vec3, Vec3, Vec3) -> Vec2;
@@ -883,11 +870,10 @@ mod code {
 #[allow(clippy::unnecessary_cast)] // as in `code`
 mod tests {
     use super::code::*;
-    use super::*;
     use crate::check::testing::caught;
-    use l01_transforms::Camera;
-    use l08_ray_tree::{TraceSettings, World, trace};
-    use l10_textures_sampling::{Filter, Pattern, grid, in_stratum, pixel_rng, sample_offsets};
+    pub(super) use l01_transforms::Camera;
+    pub(super) use l08_ray_tree::{TraceSettings, World, trace};
+    pub(super) use l10_textures_sampling::{Filter, Pattern, grid, in_stratum, pixel_rng, sample_offsets};
     use raylab::math::consts::{PI, TAU};
     use raylab::random::Rng;
     use raylab::render::render_image;
@@ -896,7 +882,7 @@ mod tests {
 
     #[test]
     fn every_declared_check_passes_on_the_reference() {
-        crate::check::testing::every_check_passes(CHECKS, run);
+        crate::check::testing::every_check_passes(super::CHECKS, super::run);
     }
 
     #[test]

@@ -11,6 +11,27 @@
 
 use crate::check::{CheckResult, Info, Meta};
 
+/// A lecture's checks, each declared once: its [`Meta`] and the expression
+/// that runs it, evaluated among the items of the lecture's `code` module
+/// (those the expressions name are `pub(super)` there). Yields `CHECKS`
+/// (always compiled: the grader lists a lecture's checks, with their points,
+/// even when the lecture does not compile) and, with the lecture's feature,
+/// `run`, which runs the row whose `exercise/name` is asked.
+macro_rules! declare_checks {
+    ($feature:literal; $($meta:expr => $run:expr),+ $(,)?) => {
+        pub const CHECKS: &[crate::check::Meta] = &[$($meta),+];
+
+        #[cfg(feature = $feature)]
+        pub fn run(name: &str) -> Option<crate::check::CheckResult> {
+            #[allow(unused_imports)]
+            use code::*;
+            let runs: &[fn() -> crate::check::CheckResult] = &[$(|| $run),+];
+            let row = CHECKS.iter().position(|meta| meta.short_id() == name)?;
+            Some(runs[row]())
+        }
+    };
+}
+
 // BEGIN GENERATED modules: written by `cargo run -p grader -- dev sync` from lectures/*/Cargo.toml; edit those, not this.
 pub mod l01;
 pub mod l02;
