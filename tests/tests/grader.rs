@@ -802,19 +802,20 @@ const RECIPE_CHECKS: &str = r#"//! Lecture 11, a scratch lecture: twice a vector
 
 use crate::check::Meta;
 
-pub const CHECKS: &[Meta] = &[Meta::unit("twice", "(1, 2, 3) doubled is (2, 4, 6)")];
+declare_checks! {
+    "l11";
+    Meta::unit("twice", "(1, 2, 3) doubled is (2, 4, 6)") => twice_cases(),
+}
 
 #[cfg(feature = "l11")]
-pub fn run(name: &str) -> Option<crate::check::CheckResult> {
+mod code {
+    use crate::check::{CheckResult, ensure};
     use raylab::Vec3;
-    let got = l11_scratch::twice(Vec3::new(1.0, 2.0, 3.0));
-    let check = || {
-        crate::check::ensure(got == Vec3::new(2.0, 4.0, 6.0), "(1, 2, 3)", "(2, 4, 6)", got, "scale by two")?;
+
+    pub(super) fn twice_cases() -> CheckResult {
+        let got = l11_scratch::twice(Vec3::new(1.0, 2.0, 3.0));
+        ensure(got == Vec3::new(2.0, 4.0, 6.0), "(1, 2, 3)", "(2, 4, 6)", got, "scale by two")?;
         Ok("1 case".into())
-    };
-    match name {
-        "twice/unit" => Some(check()),
-        _ => None,
     }
 }
 "#;

@@ -2,12 +2,11 @@
 //! (always compiled, so the grader knows every check and its points even when
 //! a lecture does not compile) and, behind the lecture's feature, the code.
 //!
-//! To add a check: declare it in the lecture's `CHECKS` table and give it an
-//! arm in the lecture's `run`; each lecture's test calls
-//! `check::testing::every_check_passes`, which fails on a declared check
-//! without an arm, and `grader --strict` (CI, on the reference) ends such a
-//! check "crashed: no such check". The list of lectures below is generated
-//! from the lecture crates' Cargo.toml.
+//! To add a check: a row of the lecture's `declare_checks!`, its `Meta` and
+//! the expression that runs it (a function of the lecture's `code` module).
+//! Each lecture's test calls `check::testing::every_check_passes`, and
+//! `grader --strict` (CI, on the reference) grades every check. The list of
+//! lectures below is generated from the lecture crates' Cargo.toml.
 
 use crate::check::{CheckResult, Info, Meta};
 
