@@ -1,0 +1,197 @@
+//! The checks of `mesh.rs`: hit_mesh.
+
+#![allow(clippy::result_large_err)] // Failure is check.rs's report, returned by value as in every lecture
+#![allow(clippy::unnecessary_cast)] // widening Float to f64 for references is the identity in an f64 build
+
+use super::common::*;
+use super::triangle::{LEAK, leak_tests};
+
+pub(super) fn mesh_no_leaks(hit_mesh: MeshFn) -> CheckResult {
+    let mut total = 0;
+    for (mesh, rays) in leak_tests() {
+        for r in &rays {
+            total += 1;
+            let got = hit_mesh(r, &mesh, ALL);
+            let case = format!(
+                "a closed mesh of {} triangles around the origin, {} (aimed at a vertex or an edge)",
+                mesh.triangles.len(),
+                show_ray(r)
+            );
+            let Some(h) = got else { return Err(fail(case, "a hit", "None (no hit)", LEAK)) };
+            ensure(
+                h.t.is_finite() && h.t > 0.0 && h.normal.is_finite(),
+                case,
+                "a finite hit",
+                show_hit(&got),
+                "no NaN may escape a hit",
+            )?;
+        }
+    }
+    Ok(format!("{total} edge and vertex rays, no leak"))
+}
+
+/// The unit square in z = 0 as triangles (0, 1, 2) and (0, 2, 3), counter-clockwise from +z.
+pub(super) fn quad() -> Mesh {
+    Mesh {
+        positions: vec![Vec3::ZERO, Vec3::X, Vec3::new(1.0, 1.0, 0.0), Vec3::Y],
+        triangles: vec![[0, 1, 2], [0, 2, 3]],
+        ..Mesh::default()
+    }
+}
+
+pub(super) fn mesh_cases(hit_mesh: MeshFn) -> CheckResult {
+    let down = |x: Float, y: Float| ray([x, y, 2.0], [0.0, 0.0, -1.0]);
+    let mesh = quad();
+    let name = "the unit square as triangles (0, 1, 2), (0, 2, 3)";
+    // (0.75, 0.25) is in (0, x̂, x̂ + ŷ): p = (β + γ, γ), so β = 0.5, γ = 0.25.
+    for (x, y, uv) in [(0.75, 0.25, Vec2::new(0.5, 0.25)), (0.25, 0.75, Vec2::new(0.25, 0.5))] {
+        let r = down(x, y);
+        let case = format!("{name}, {}", show_ray(&r));
+        let got = hit_mesh(&r, &mesh, ALL);
+        let Some(h) = got else {
+            return Err(fail(case, "t = 2", show_hit(&got), "test every triangle with hit_triangle"));
+        };
+        close(&case, h.t, 2.0, TOL, "the triangle's t")?;
+        close3(
+            &case,
+            h.normal,
+            Vec3::Z,
+            TOL,
+            "a mesh without normals keeps the triangle's geometric normal",
+        )?;
+        close3(
+            &case,
+            Vec3::new(h.uv.x, h.uv.y, 0.0),
+            uv.extend(0.0),
+            TOL,
+            "without mesh uvs the hit's uv is the triangle's (β, γ)",
+        )?;
+    }
+    for (r, m, why) in [
+        (down(1.5, 0.5), quad(), "beside the square: no hit"),
+        (down(0.5, 0.5), Mesh::default(), "an empty mesh is never hit"),
+    ] {
+        let got = hit_mesh(&r, &m, ALL);
+        ensure(got.is_none(), format!("{name}, {}", show_ray(&r)), "None", show_hit(&got), why)?;
+    }
+    // Two layers, z = 0 and z = −1, in both orders: the nearer one (t = 2 from above) wins.
+    let near_layer = quad();
+    for far_first in [true, false] {
+        let far: Vec<Vec3> = near_layer.positions.iter().map(|p| *p - Vec3::Z).collect();
+        let (first, second) =
+            if far_first { (far, near_layer.positions.clone()) } else { (near_layer.positions.clone(), far) };
+        let layers = Mesh {
+            positions: first.into_iter().chain(second).collect(),
+            triangles: vec![[0, 1, 2], [0, 2, 3], [4, 5, 6], [4, 6, 7]],
+            ..Mesh::default()
+        };
+        let r = down(0.3, 0.6);
+        let order = if far_first { "the far layer listed first" } else { "the near layer listed first" };
+        let case = format!("squares at z = 0 and z = −1 ({order}), {}", show_ray(&r));
+        let got = hit_mesh(&r, &layers, ALL);
+        close(
+            &case,
+            got.map_or(Float::NAN, |h| h.t),
+            2.0,
+            TOL,
+            "keep the closest hit: shrink range.max to each hit's t and test every triangle",
+        )?;
+    }
+    // Mesh uvs 2·(x, y) + (1, 3) (no corner's uv is zero, so each corner's weight shows) and
+    // normals (x, 0, 1)/|…| per vertex, interpolated at (0.75, 0.25).
+    let mut textured = quad();
+    textured.uvs = textured.positions.iter().map(|p| 2.0 * p.truncate() + Vec2::new(1.0, 3.0)).collect();
+    textured.normals = textured.positions.iter().map(|p| Vec3::new(p.x, 0.0, 1.0).normalize()).collect();
+    let r = down(0.75, 0.25);
+    let case =
+        format!("{name} with uvs 2·(x, y) + (1, 3) and normals (x, 0, 1) normalised, {}", show_ray(&r));
+    let got = hit_mesh(&r, &textured, ALL);
+    let Some(h) = got else { return Err(fail(case, "a hit", show_hit(&got), "test every triangle")) };
+    // Weights (1 − β − γ, β, γ) = (0.25, 0.5, 0.25) of uv_a = (1, 3), uv_b = (3, 3), uv_c = (3, 5):
+    // uv = (0.25 + 1.5 + 0.75, 0.75 + 1.5 + 1.25) = (2.5, 3.5).
+    close3(
+        format!("{case}: the hit's uv"),
+        Vec3::new(h.uv.x, h.uv.y, 0.0),
+        Vec3::new(2.5, 3.5, 0.0),
+        TOL,
+        "with mesh uvs, uv = (1 − β − γ)uv_a + β·uv_b + γ·uv_c",
+    )?;
+    // Normal: 0.25·ẑ + 0.75·(1, 0, 1)/√2, normalised.
+    let expected = (0.25 * Vec3::Z + 0.75 * Vec3::new(1.0, 0.0, 1.0).normalize()).normalize();
+    close3(
+        &case,
+        h.normal,
+        expected,
+        TOL,
+        "with mesh normals, pass the triangle's three vertex normals to hit_triangle",
+    )?;
+    Ok("2 hits, 2 misses, layers in both orders, mesh uvs and normals".into())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::check::testing::caught;
+
+    /// hit_mesh as written, or with one planted mistake.
+    #[derive(Clone, Copy, PartialEq, Eq)]
+    enum MeshMistake {
+        Faithful,
+        /// The range never shrinks: the last hit in the list wins, not the closest.
+        RangeNeverShrinks,
+        /// The mesh's uvs ignored: the triangle's (β, γ) stays.
+        MeshUvsIgnored,
+        /// The mesh's vertex normals ignored.
+        MeshNormalsIgnored,
+    }
+
+    fn planted_mesh(ray: &Ray, mesh: &Mesh, range: Interval, mistake: MeshMistake) -> Option<Hit> {
+        let mut closest: Option<(Hit, [usize; 3])> = None;
+        let mut range = range;
+        for triangle in &mesh.triangles {
+            let corners = triangle.map(|i| i as usize);
+            let vertices = corners.map(|i| mesh.positions[i]);
+            let normals = (mistake != MeshMistake::MeshNormalsIgnored && !mesh.normals.is_empty())
+                .then(|| corners.map(|i| mesh.normals[i]));
+            if let Some(hit) = hit_triangle(ray, &vertices, normals.as_ref(), range) {
+                if mistake != MeshMistake::RangeNeverShrinks {
+                    range = range.with_max(hit.t);
+                }
+                closest = Some((hit, corners));
+            }
+        }
+        let (hit, [a, b, c]) = closest?;
+        if mistake == MeshMistake::MeshUvsIgnored || mesh.uvs.is_empty() {
+            return Some(hit);
+        }
+        let (beta, gamma) = (hit.uv.x, hit.uv.y);
+        Some(hit.with_uv((1.0 - beta - gamma) * mesh.uvs[a] + beta * mesh.uvs[b] + gamma * mesh.uvs[c]))
+    }
+
+    #[test]
+    fn mesh_mistakes() {
+        assert!(mesh_cases(|r, m, i| planted_mesh(r, m, i, MeshMistake::Faithful)).is_ok());
+        caught(
+            mesh_cases(|r, m, i| planted_mesh(r, m, i, MeshMistake::RangeNeverShrinks)),
+            "keep the closest hit",
+        );
+        caught(mesh_cases(|r, m, i| planted_mesh(r, m, i, MeshMistake::MeshUvsIgnored)), "with mesh uvs");
+        caught(
+            mesh_cases(|r, m, i| planted_mesh(r, m, i, MeshMistake::MeshNormalsIgnored)),
+            "with mesh normals",
+        );
+        // A mesh of Möller–Trumbore triangles leaks.
+        caught(
+            mesh_no_leaks(|r, m, i| {
+                (0..m.triangles.len())
+                    .filter_map(|k| {
+                        let [a, b, c] = m.triangle(k);
+                        hit_triangle_moller_trumbore(r, a, b, c, i)
+                            .map(|h| Hit::new(r, h.t, (b - a).cross(c - a)))
+                    })
+                    .min_by(|x, y| x.t.total_cmp(&y.t))
+            }),
+            "slipped between",
+        );
+    }
+}
