@@ -1,0 +1,149 @@
+//! What the checks of lecture 06's files share.
+
+// `Failure` is large (its optional images); see check.rs.
+#![allow(clippy::result_large_err)]
+
+pub(super) use l05_shading::LightSample;
+pub(super) use l06_shadows::{
+    ShadowMode, ShadowSettings, Surface, occluded, offset_origin, offset_origin_fixed_normal,
+    offset_origin_fixed_t, point_seed, shade_area_light, shade_with_shadows, stratified, transmittance,
+    visibility,
+};
+pub(super) use raylab::random::Rng;
+pub(super) use raylab::scene::{Attenuation, Light, LightKind, Material};
+pub(super) use raylab::stats::{Counter, measure};
+pub(super) use raylab::{BLACK, Color, Float, Hit, Intersector, Interval, Ray, Vec2, Vec3, WHITE, radians};
+pub(super) use std::sync::atomic::{AtomicUsize, Ordering};
+
+pub(super) use crate::check::{CheckResult, Failure, close3, ensure, num, vec3, wide, wide3};
+
+pub(super) type OffsetFn = fn(Vec3, Vec3, Vec3, Vec3) -> Vec3;
+pub(super) type OccludedFn = fn(&dyn Intersector, Vec3, &LightSample) -> bool;
+pub(super) type TransmittanceFn = fn(&dyn Intersector, &[Material], Vec3, &LightSample) -> Color;
+pub(super) type VisibilityFn = fn(&dyn Intersector, &[Material], &Surface, &LightSample, ShadowMode) -> Color;
+pub(super) type ShadeFn =
+    fn(&dyn Intersector, &[Material], &Surface, &[Light], Color, ShadowSettings) -> Color;
+pub(super) type StratifiedFn = fn(u32, &mut Rng) -> Vec<Vec2>;
+pub(super) type AreaFn = fn(&dyn Intersector, &[Material], &Surface, &Light, ShadowSettings) -> Color;
+
+pub(super) const EPS: Float = Float::EPSILON;
+
+pub(super) fn v(x: Float, y: Float, z: Float) -> Vec3 {
+    Vec3::new(x, y, z)
+}
+
+/// The gap from |x| to the next float up.
+pub(super) fn ulp(x: Float) -> Float {
+    let x = x.abs();
+    x.next_up() - x
+}
+
+// ------------------------------------------------------- the check's scene
+
+/// The shapes of the checks' scenes.
+#[derive(Clone, Copy, Debug)]
+pub(super) enum Shape {
+    Sphere {
+        center: Vec3,
+        radius: Float,
+    },
+    /// The plane y = height, normal +y.
+    Floor {
+        height: Float,
+    },
+    /// The part x < 0 of the plane y = height: a blocker with a straight edge.
+    HalfFloor {
+        height: Float,
+    },
+}
+
+/// An intersector over shapes with their material indices, computed in `Float` by
+/// the textbook formulas (the robust quadratic for spheres). It counts its queries.
+pub(super) struct Scene {
+    pub shapes: Vec<(Shape, usize)>,
+    pub closest_calls: AtomicUsize,
+    pub any_calls: AtomicUsize,
+}
+
+impl Scene {
+    pub fn new(shapes: &[(Shape, usize)]) -> Self {
+        Self { shapes: shapes.to_vec(), closest_calls: AtomicUsize::new(0), any_calls: AtomicUsize::new(0) }
+    }
+
+    fn hit_shape(shape: Shape, ray: &Ray, range: Interval) -> Option<Hit> {
+        match shape {
+            Shape::Sphere { center, radius } => {
+                let a = ray.dir.length_squared();
+                let f = ray.origin - center;
+                let b = f.dot(ray.dir);
+                let off = f - (b / a) * ray.dir;
+                let disc = a * (radius * radius - off.length_squared());
+                if disc < 0.0 {
+                    return None;
+                }
+                let q = -b - disc.sqrt().copysign(b);
+                let (t1, t2) = (q / a, (f.length_squared() - radius * radius) / q);
+                let (near, far) = if t1 <= t2 { (t1, t2) } else { (t2, t1) };
+                let t = if range.contains(near) {
+                    near
+                } else if range.contains(far) {
+                    far
+                } else {
+                    return None;
+                };
+                Some(Hit::new(ray, t, ray.at(t) - center))
+            }
+            Shape::Floor { height } | Shape::HalfFloor { height } => {
+                if ray.dir.y == 0.0 {
+                    return None;
+                }
+                let t = (height - ray.origin.y) / ray.dir.y;
+                let inside = !matches!(shape, Shape::HalfFloor { .. }) || ray.at(t).x < 0.0;
+                (range.contains(t) && inside).then(|| Hit::new(ray, t, Vec3::Y))
+            }
+        }
+    }
+}
+
+impl Intersector for Scene {
+    fn closest_hit(&self, ray: &Ray, range: Interval) -> Option<Hit> {
+        self.closest_calls.fetch_add(1, Ordering::Relaxed);
+        let mut best: Option<Hit> = None;
+        for (index, &(shape, material)) in self.shapes.iter().enumerate() {
+            let range = best.map_or(range, |h| range.with_max(h.t));
+            if let Some(hit) = Self::hit_shape(shape, ray, range) {
+                best = Some(Hit { object: index, material, ..hit });
+            }
+        }
+        best
+    }
+
+    fn any_hit(&self, ray: &Ray, range: Interval) -> bool {
+        self.any_calls.fetch_add(1, Ordering::Relaxed);
+        self.shapes.iter().any(|&(shape, _)| Self::hit_shape(shape, ray, range).is_some())
+    }
+}
+
+pub(super) fn sphere(x: Float, y: Float, z: Float, radius: Float, material: usize) -> (Shape, usize) {
+    (Shape::Sphere { center: v(x, y, z), radius }, material)
+}
+
+pub(super) fn floor(height: Float, material: usize) -> (Shape, usize) {
+    (Shape::Floor { height }, material)
+}
+
+/// A white diffuse material letting `transparent` through.
+pub(super) fn see_through(transparent: Color) -> Material {
+    Material { transparent, ..Material::default() }
+}
+
+/// A point light at `position` seen from `from` (white, undimmed).
+pub(super) fn toward_point(from: Vec3, position: Vec3) -> LightSample {
+    let to = position - from;
+    LightSample { direction: to.normalize(), distance: to.length(), intensity: WHITE }
+}
+
+/// A directional light seen along the unit `l`.
+pub(super) fn toward(l: Vec3) -> LightSample {
+    LightSample { direction: l, distance: Float::INFINITY, intensity: WHITE }
+}
