@@ -1,0 +1,52 @@
+//! What the checks of lecture 04's files share.
+
+#![allow(clippy::result_large_err)] // Failure is check.rs's report, returned by value as in every lecture
+#![allow(clippy::unnecessary_cast)] // widening Float to f64 for references is the identity in an f64 build
+
+pub(super) use l04_quadrics_transforms::{
+    first_crossing, hit_cone, hit_cylinder, hit_transformed, normal_to_world, parametric_normal,
+    ray_to_object, slab_z_span,
+};
+pub(super) use raylab::math::consts::{FRAC_PI_6, TAU};
+pub(super) use raylab::random::Rng;
+pub(super) use raylab::scene::Transform;
+pub(super) use raylab::{Float, Hit, Interval, Mat4, Ray, Vec2, Vec3};
+
+pub(super) use crate::check::{CheckResult, Failure, close, close3, ensure, fail, maybe, num, vec3};
+
+pub(super) type SpanFn = fn(Float, Float) -> Option<(Float, Float)>;
+pub(super) type CrossingFn = fn((Float, Float), (Float, Float), Interval) -> Option<(Float, bool)>;
+pub(super) type ShapeFn = fn(&Ray, Interval) -> Option<Hit>;
+pub(super) type ParametricFn = fn(Vec3, Vec3) -> Vec3;
+pub(super) type ToObjectFn = fn(&Ray, &Mat4) -> Ray;
+pub(super) type NormalFn = fn(Vec3, &Mat4) -> Vec3;
+pub(super) type TransformedFn = fn(&Ray, &Transform, Interval, ShapeFn) -> Option<Hit>;
+
+/// t, points and unit normals of unit-sized shapes a few units away: the
+/// inputs are dyadic, the roots, products and normalisations round a few
+/// times on numbers ≤ 4; 16ε holds them (2e-6 in f32).
+pub(super) const TOL: Float = 16.0 * Float::EPSILON;
+
+pub(super) const ALL: Interval = Interval::POSITIVE;
+
+pub(super) const SQRT_HALF: Float = std::f64::consts::FRAC_1_SQRT_2 as Float;
+
+pub(super) fn ray(o: [Float; 3], d: [Float; 3]) -> Ray {
+    Ray::new(Vec3::from_array(o), Vec3::from_array(d))
+}
+
+pub(super) fn show_ray(r: &Ray) -> String {
+    format!("ray from {} along {}", vec3(r.origin), vec3(r.dir))
+}
+
+pub(super) fn show_hit(h: &Option<Hit>) -> String {
+    maybe(h, |h| format!("t = {}, normal {}, front_face {}", num(h.t), vec3(h.normal), h.front_face))
+}
+
+pub(super) fn near3(a: Vec3, b: Vec3, tol: Float) -> bool {
+    (a - b).abs().max_element() <= tol
+}
+
+pub(super) fn show_span(s: &Option<(Float, Float)>) -> String {
+    maybe(s, |(a, b)| format!("({}, {})", num(*a), num(*b)))
+}
