@@ -1,0 +1,106 @@
+//! What the checks of lecture 01's files share.
+
+#![allow(clippy::result_large_err)] // Failure is check.rs's report, returned by value as in every lecture
+#![allow(clippy::unnecessary_cast)] // widening Float to f64 for references is the identity in an f64 build
+
+pub(super) use l01_transforms::{
+    CameraError, OrthographicCamera, PerspectiveCamera, frame, is_basis, look_at, rotate_axis, rotate_x,
+    rotate_y, rotate_z, scale, screen_coords, transform_point, transform_vector, translate,
+};
+pub(super) use raylab::math::consts::{FRAC_PI_2, TAU};
+pub(super) use raylab::{Float, Mat4, Ray, Vec3, Vec4, radians};
+
+pub(super) use crate::check::{CheckResult, Failure, close3, ensure, fail, num, vec3};
+
+pub(super) type VecToMat = fn(Vec3) -> Mat4;
+pub(super) type AngleToMat = fn(Float) -> Mat4;
+pub(super) type AxisAngleFn = fn(Vec3, Float) -> Mat4;
+pub(super) type ApplyFn = fn(&Mat4, Vec3) -> Vec3;
+pub(super) type FrameFn = fn(Vec3, Vec3, Vec3, Vec3) -> Mat4;
+pub(super) type BasisFn = fn(Vec3, Vec3, Vec3) -> bool;
+pub(super) type LookAtFn = fn(Vec3, Vec3, Vec3) -> Result<Mat4, CameraError>;
+pub(super) type ScreenFn = fn(u32, u32, u32, u32) -> (Float, Float);
+pub(super) type PerspectiveFn = fn(&PerspectiveCamera, Float, Float) -> Ray;
+pub(super) type OrthographicFn = fn(&OrthographicCamera, Float, Float) -> Ray;
+
+/// Entries of unit-sized matrices and vectors: sin, cos, a product and a
+/// sum round a few times, each by ε/2 of a number ≤ 1; 8ε holds them
+/// (1e-6 in f32).
+pub(super) const TOL: Float = 8.0 * Float::EPSILON;
+
+/// The course's bound on a look-at basis (issue 5): orthonormal within 1e-6.
+/// f32 rounding alone leaves a few ε ≈ 5e-7, so it must be no looser in f32;
+/// in f64, 8ε keeps the check as strict relative to the precision.
+pub(super) const BASIS_TOL: Float = if Float::EPSILON > 1e-10 { 1e-6 } else { 8.0 * Float::EPSILON };
+
+pub(super) const WRONG_WAY: &str = "the rotation turns the wrong way (you built its transpose, the inverse): \
+    right-handed, a quarter turn takes the next axis to the one after (about z: +x to +y), so −sin θ \
+    sits in the column of the second axis";
+
+/// A matrix row by row, for a student.
+pub(super) fn rows(m: &Mat4) -> String {
+    let row = |i: usize| {
+        let r = m.row(i);
+        format!("[{}, {}, {}, {}]", num(r.x), num(r.y), num(r.z), num(r.w))
+    };
+    format!("rows {} {} {} {}", row(0), row(1), row(2), row(3))
+}
+
+/// The largest entry of |a − b| (NaN when either has a NaN).
+pub(super) fn distance(a: &Mat4, b: &Mat4) -> Float {
+    (*a - *b)
+        .to_cols_array()
+        .iter()
+        .fold(0.0, |m: Float, e| if e.is_nan() { Float::NAN } else { m.max(e.abs()) })
+}
+
+pub(super) fn near(a: &Mat4, b: &Mat4, tol: Float) -> bool {
+    distance(a, b) <= tol
+}
+
+/// Fails unless `got` is `expected` within `tol` per entry; a transposed
+/// answer gets `transposed` as its cause.
+pub(super) fn same_matrix(
+    case: &str,
+    got: &Mat4,
+    expected: &Mat4,
+    tol: Float,
+    cause: &str,
+    transposed: &str,
+) -> Result<(), Failure> {
+    if near(got, expected, tol) {
+        return Ok(());
+    }
+    let cause = if near(got, &expected.transpose(), tol) { transposed } else { cause };
+    Err(fail(case, format!("{} (± {tol:.1e} each)", rows(expected)), rows(got), cause))
+}
+
+/// The first of `candidates` (a wrong answer and the mistake that gives it)
+/// that `got` matches, else `default`.
+pub(super) fn diagnose<'a>(
+    got: Vec3,
+    candidates: &[(Vec3, &'a str)],
+    tol: Float,
+    default: &'a str,
+) -> &'a str {
+    candidates.iter().find(|(v, _)| (got - *v).abs().max_element() <= tol).map_or(default, |(_, c)| c)
+}
+
+pub(super) fn near3(a: Vec3, b: Vec3, tol: Float) -> bool {
+    (a - b).abs().max_element() <= tol
+}
+
+/// m applied to (v, w) with glam's product: the check's own arithmetic.
+pub(super) fn apply(m: &Mat4, v: Vec3, w: Float) -> Vec3 {
+    (*m * v.extend(w)).truncate()
+}
+
+pub(super) fn axis_name(axis: usize) -> &'static str {
+    ["x", "y", "z"][axis]
+}
+
+pub(super) fn unit(axis: usize) -> Vec3 {
+    let mut v = Vec3::ZERO;
+    v[axis] = 1.0;
+    v
+}
