@@ -22,10 +22,13 @@ macro_rules! declare_checks {
 
         #[cfg(feature = $feature)]
         pub fn run(name: &str) -> Option<crate::check::CheckResult> {
-            #[allow(unused_imports)]
-            use code::*;
-            let runs: &[fn() -> crate::check::CheckResult] = &[$(|| $run),+];
             let row = CHECKS.iter().position(|meta| meta.short_id() == name)?;
+            // In a block of their own, so that the code's names cannot shadow `name`.
+            let runs: Vec<fn() -> crate::check::CheckResult> = {
+                #[allow(unused_imports)]
+                use code::*;
+                vec![$(|| $run),+]
+            };
             Some(runs[row]())
         }
     };
