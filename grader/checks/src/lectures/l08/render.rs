@@ -1,0 +1,180 @@
+//! The checks of `render.rs`: render.
+
+use super::common::*;
+
+/// A mirror ball, a glass ball and a matte one over a floor, lit, seen from (0, 0, 5).
+pub(super) fn three_balls() -> Scene {
+    scene(
+        vec![
+            plane(Vec3::Y, -1.0, 0),
+            sphere(v(-1.2, 0.0, 0.0), 0.8, 1),
+            sphere(v(0.0, 0.0, 0.5), 0.6, 2),
+            sphere(v(1.2, 0.0, 0.0), 0.8, 3),
+        ],
+        vec![matte(v(0.8, 0.8, 0.6)), mirror(0.8), glass(1.5), matte(v(0.2, 0.4, 0.9))],
+        vec![directional(v(-1.0, 2.0, 1.0).normalize(), Color::ONE)],
+        v(0.3, 0.4, 0.6),
+        Color::splat(0.1),
+    )
+}
+
+/// A 16 × 12 render of [`three_balls`]: each pixel against `trace` of 01's `pixel_ray` at
+/// depth 0 and weight 1 (the student's own trace and camera, checked by their own checks),
+/// and the primary-ray count.
+pub(super) fn render_cases(render: RenderFn) -> CheckResult {
+    let s = three_balls();
+    let (w, h) = (s.width, s.height);
+    let camera = Camera::from_scene(&s.camera, w, h).map_err(|e| {
+        fail(
+            "the camera of the check scene",
+            "a camera",
+            e.to_string(),
+            "01's PerspectiveCamera::new must accept it",
+        )
+    })?;
+    let objects = BruteForce::new(&s.objects);
+    let world = World::new(&s, &objects);
+    // Depth 2: a ray through the glass ball needs both levels to get out (in at depth 1,
+    // out at depth 2), so an eye ray traced at depth 1 shows black glass.
+    let settings = TraceSettings { max_depth: 2, ..TraceSettings::default() };
+    let case = format!("render of three balls (mirror, glass, matte) over a floor, {w} × {h}, max_depth 2");
+    let (image, stats) = render(&world, &camera, w, h, &settings);
+    ensure(
+        image.width == w && image.height == h && image.pixels.len() == (w * h) as usize,
+        &case,
+        format!("a {w} × {h} image"),
+        format!("{} × {} ({} pixels)", image.width, image.height, image.pixels.len()),
+        "one pixel per (x, y), x < width, y < height",
+    )?;
+    let at = |x: u32, y: u32, depth: u32, weight: Float| {
+        trace(&world, &camera.pixel_ray(x, y, w, h), depth, weight, &settings)
+    };
+    // Each pixel against its eye ray's colour. The same ray and the same trace give the
+    // same colour; 64ε allows a student's render that rounds the ray differently.
+    for y in 0..h {
+        for x in 0..w {
+            let expected = at(x, y, 0, 1.0);
+            let got = image.get(x, y);
+            if near(got, expected, COLOR_TOL) {
+                continue;
+            }
+            let pixel = format!("{case}: pixel ({x}, {y})");
+            let corner =
+                camera.generate_ray(2.0 * x as Float / w as Float - 1.0, 1.0 - 2.0 * y as Float / h as Float);
+            let cause = if near(got, at(x, y, 1, 1.0), COLOR_TOL) {
+                "the eye ray is the root of the ray tree: trace it at depth 0, not 1"
+            } else if near(got, at(x, y, 0, 0.0), COLOR_TOL) {
+                "the eye ray has weight 1: pass 1.0 to trace"
+            } else if near(got, trace(&world, &corner, 0, 1.0, &settings), COLOR_TOL) {
+                "trace the ray through the pixel's centre (x + ½, y + ½): camera.pixel_ray(x, y, w, h)"
+            } else if near(got, at(x, h - 1 - y, 0, 1.0), COLOR_TOL) {
+                "pixel (0, 0) is the top-left: y grows downward, as pixel_ray takes it"
+            } else if y < w && x < h && near(got, at(y, x, 0, 1.0), COLOR_TOL) {
+                "x is the column and y the row: image pixel (x, y) is camera.pixel_ray(x, y, width, height)"
+            } else {
+                "each pixel is trace(world, &camera.pixel_ray(x, y, width, height), 0, 1.0, settings)"
+            };
+            return Err(fail(pixel, vec3(expected), vec3(got), cause));
+        }
+    }
+    let primary = stats.get(Counter::PrimaryRays);
+    ensure(
+        primary == u64::from(w * h),
+        &case,
+        format!("{} primary rays", w * h),
+        format!("{primary} primary rays"),
+        "count one Counter::PrimaryRays per pixel, inside the pixel closure (trace counts the other rays)",
+    )?;
+    let secondary = stats.get(Counter::ReflectionRays) + stats.get(Counter::RefractionRays);
+    ensure(
+        secondary > 0,
+        &case,
+        "the pixels' mirror and refracted rays in the statistics",
+        "none",
+        "return the statistics of render_image, which adds up what every pixel counted",
+    )?;
+    Ok(format!("{} pixels, {primary} primary rays", w * h))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::check::testing::caught;
+    use l01_transforms::Camera;
+
+    use l08_ray_tree::{TraceSettings, World, trace};
+    use raylab::render::render_image;
+    use raylab::stats::{Counter, RayStats, count};
+    use raylab::{Float, Image};
+
+    /// The slips planted in the copy of the reference render.
+    #[derive(Clone, Copy, PartialEq, Eq)]
+    enum RenderSlip {
+        /// Primary rays traced at depth 1, not 0.
+        DepthOne,
+        /// Primary rays traced with weight 0, not 1.
+        WeightZero,
+        /// Rays through the pixels' corners, not their centres.
+        CornerRays,
+        /// Primary rays not counted.
+        Uncounted,
+        /// Rows from the bottom: the image upside down.
+        UpsideDown,
+    }
+
+    /// The reference render with a slip.
+    fn render_with(
+        world: &World,
+        camera: &Camera,
+        w: u32,
+        h: u32,
+        s: &TraceSettings,
+        slip: RenderSlip,
+    ) -> (Image, RayStats) {
+        render_image(w, h, |x, y| {
+            if slip != RenderSlip::Uncounted {
+                count(Counter::PrimaryRays);
+            }
+            let ray = match slip {
+                RenderSlip::CornerRays => camera
+                    .generate_ray(2.0 * x as Float / w as Float - 1.0, 1.0 - 2.0 * y as Float / h as Float),
+                RenderSlip::UpsideDown => camera.pixel_ray(x, h - 1 - y, w, h),
+                _ => camera.pixel_ray(x, y, w, h),
+            };
+            match slip {
+                RenderSlip::DepthOne => trace(world, &ray, 1, 1.0, s),
+                RenderSlip::WeightZero => trace(world, &ray, 0, 0.0, s),
+                _ => trace(world, &ray, 0, 1.0, s),
+            }
+        })
+    }
+
+    macro_rules! render_slips {
+        ($($name:ident => $slip:expr),* $(,)?) => {
+            $(fn $name(world: &World, camera: &Camera, w: u32, h: u32, s: &TraceSettings) -> (Image, RayStats) {
+                render_with(world, camera, w, h, s, $slip)
+            })*
+        };
+    }
+
+    render_slips! {
+        depth_one => RenderSlip::DepthOne,
+        weight_zero => RenderSlip::WeightZero,
+        corner_rays => RenderSlip::CornerRays,
+        uncounted => RenderSlip::Uncounted,
+        upside_down => RenderSlip::UpsideDown,
+    }
+
+    #[test]
+    fn planted_render_mistakes_are_caught_with_their_cause() {
+        for (render, cause) in [
+            (depth_one as RenderFn, "depth 0, not 1"),
+            (weight_zero, "weight 1"),
+            (corner_rays, "through the pixel's centre"),
+            (uncounted, "Counter::PrimaryRays per pixel"),
+            (upside_down, "top-left"),
+        ] {
+            caught(render_cases(render), cause);
+        }
+    }
+}
