@@ -4,193 +4,232 @@
 //! Gradescope shows them after the grades are published.
 
 use super::{Lecture, runner};
-use crate::check::Meta;
-
-const L02: &[Meta] = &[Meta::unit(
-    "hit_sphere_stable",
-    "an off-axis ray at an off-centre sphere of radius 0.5, both roots ahead",
-)
-.named_hidden("hidden-off-axis")];
-
-const L01: &[Meta] =
-    &[Meta::unit("rotate_z", "a quarter turn about z takes x to y, counter-clockwise seen from +z")
-        .named_hidden("hidden-quarter-turn")];
-
-const L03: &[Meta] =
-    &[Meta::unit("hit_slabs", "a ray along +z through an off-origin box: enter and exit t by hand")
-        .named_hidden("hidden-off-origin-box")];
-
-const L05: &[Meta] =
-    &[Meta::unit("lambert", "a 3-4-5 direction to the light, and the same light behind the surface")
-        .named_hidden("hidden-3-4-5")];
-
-const L09: &[Meta] = &[Meta::unit("Aabb::surface_area", "a 1 × 2 × 3 box away from the origin: 22 by hand")
-    .named_hidden("hidden-1-2-3-box")];
-
-const L07: &[Meta] =
-    &[Meta::unit("refract", "refraction into glass at 30° and back out, against Snell's law by hand")
-        .named_hidden("hidden-snell-both-ways")];
 
 pub fn lectures() -> Vec<Lecture> {
     vec![
-        Lecture { number: "01", checks: L01, run: runner!("l01", run01), hidden: true },
-        Lecture { number: "02", checks: L02, run: runner!("l02", run02), hidden: true },
-        Lecture { number: "03", checks: L03, run: runner!("l03", run03), hidden: true },
-        Lecture { number: "05", checks: L05, run: runner!("l05", run05), hidden: true },
-        Lecture { number: "07", checks: L07, run: runner!("l07", run07), hidden: true },
-        Lecture { number: "09", checks: L09, run: runner!("l09", run09), hidden: true },
+        Lecture { number: "01", checks: h01::CHECKS, run: runner!("l01", h01::run), hidden: true },
+        Lecture { number: "02", checks: h02::CHECKS, run: runner!("l02", h02::run), hidden: true },
+        Lecture { number: "03", checks: h03::CHECKS, run: runner!("l03", h03::run), hidden: true },
+        Lecture { number: "05", checks: h05::CHECKS, run: runner!("l05", h05::run), hidden: true },
+        Lecture { number: "07", checks: h07::CHECKS, run: runner!("l07", h07::run), hidden: true },
+        Lecture { number: "09", checks: h09::CHECKS, run: runner!("l09", h09::run), hidden: true },
     ]
 }
 
-#[cfg(feature = "l02")]
-fn run02(name: &str) -> Option<crate::check::CheckResult> {
-    use crate::check::{close, fail};
-    use l02_ray_casting::hit_sphere_stable;
-    use raylab::{Float, Interval, Ray, Vec3};
-    if name != "hit_sphere_stable/hidden-off-axis" {
-        return None;
+mod h01 {
+    use crate::check::Meta;
+
+    declare_checks! {
+        "l01";
+        Meta::unit("rotate_z", "a quarter turn about z takes x to y, counter-clockwise seen from +z")
+        .named_hidden("hidden-quarter-turn") => hidden(),
     }
-    // Sphere r = 0.5 at (1, 2, −3); the ray from (1, 2.3, 2) along −z passes 0.3 from the
-    // centre: half chord √(0.25 − 0.09) = 0.4, so t = 5 − 0.4 = 4.6 (and 5.4).
-    let case = "sphere r = 0.5 at (1, 2, −3), ray from (1, 2.3, 2) along (0, 0, −1)";
-    let ray = Ray::new(Vec3::new(1.0, 2.3, 2.0), Vec3::new(0.0, 0.0, -1.0));
-    let got = hit_sphere_stable(&ray, Vec3::new(1.0, 2.0, -3.0), 0.5, Interval::new(0.0, Float::INFINITY));
-    let Some(hit) = got else {
-        return Some(Err(fail(
-            case,
-            "t = 4.6",
-            "None",
-            "the ray passes 0.3 from the centre, inside r = 0.5",
-        )));
-    };
-    // 4.6 is not exact in binary: a few ulp of 5.
-    let tolerance = 64.0 * Float::EPSILON * 5.0;
-    Some(close(case, hit.t, 4.6, tolerance, "the nearer root of the quadratic").map(|()| "1 case".into()))
+
+    #[cfg(feature = "l01")]
+    mod code {
+        pub(super) fn hidden() -> crate::check::CheckResult {
+            use crate::check::close3;
+            use l01_transforms::{rotate_z, transform_vector};
+            use raylab::{Float, Vec3};
+            // R_z(90°) = [[0, −1, 0], [1, 0, 0], [0, 0, 1]]: x ↦ y and y ↦ −x; cos 90° rounds to ~6e-8 in f32.
+            let r = rotate_z(std::f64::consts::FRAC_PI_2 as Float);
+            let case = "rotate_z(π/2) applied to the vectors x and y";
+            let tolerance = 4.0 * Float::EPSILON;
+            let cause =
+                "R_z(θ) = [[cos θ, −sin θ, 0], [sin θ, cos θ, 0], [0, 0, 1]]: counter-clockwise seen from +z";
+            close3(case, transform_vector(&r, Vec3::X), Vec3::Y, tolerance, cause)?;
+            close3(case, transform_vector(&r, Vec3::Y), -Vec3::X, tolerance, cause).map(|()| "2 cases".into())
+        }
+    }
 }
 
-#[cfg(feature = "l07")]
-fn run07(name: &str) -> Option<crate::check::CheckResult> {
-    use crate::check::{close3, fail};
-    use l07_reflection_refraction::refract;
-    use raylab::{Float, Vec3};
-    if name != "refract/hidden-snell-both-ways" {
-        return None;
-    }
-    // i at 30° to the normal n = +y, going down: i = (sin 30°, −cos 30°, 0). Into glass
-    // (η = 1/1.5): sin θt = sin 30° / 1.5 = 1/3, cos θt = √(8/9), t = (1/3, −√(8/9), 0).
-    let (s, c) = (0.5 as Float, (0.75 as Float).sqrt());
-    let i = Vec3::new(s, -c, 0.0);
-    let expected = Vec3::new(1.0 / 3.0, -(8.0 as Float / 9.0).sqrt(), 0.0);
-    let case = "i at 30° from the normal (0, 1, 0), air to glass (η = 1/1.5)";
-    let Some(t) = refract(i, Vec3::Y, 1.0 / 1.5) else {
-        return Some(Err(fail(
-            case,
-            "a refracted ray",
-            "None",
-            "no total internal reflection going into glass",
-        )));
-    };
-    let tolerance = 16.0 * Float::EPSILON;
-    if let Err(e) = close3(case, t, expected, tolerance, "t = η i + (η cos θi − cos θt) n") {
-        return Some(Err(e));
-    }
-    // And back out along the reversed ray: the original direction, reversed (reciprocity).
-    let case = "the refracted ray reversed, glass to air (η = 1.5), normal (0, −1, 0) facing it";
-    let Some(back) = refract(-t, -Vec3::Y, 1.5) else {
-        return Some(Err(fail(
-            case,
-            "a refracted ray",
-            "None",
-            "below the critical angle there is a refracted ray",
-        )));
-    };
-    Some(close3(case, back, -i, tolerance, "Snell's law is reversible").map(|()| "2 cases".into()))
-}
+mod h02 {
+    use crate::check::Meta;
 
-#[cfg(feature = "l01")]
-fn run01(name: &str) -> Option<crate::check::CheckResult> {
-    use crate::check::close3;
-    use l01_transforms::{rotate_z, transform_vector};
-    use raylab::{Float, Vec3};
-    if name != "rotate_z/hidden-quarter-turn" {
-        return None;
-    }
-    // R_z(90°) = [[0, −1, 0], [1, 0, 0], [0, 0, 1]]: x ↦ y and y ↦ −x; cos 90° rounds to ~6e-8 in f32.
-    let r = rotate_z(std::f64::consts::FRAC_PI_2 as Float);
-    let case = "rotate_z(π/2) applied to the vectors x and y";
-    let tolerance = 4.0 * Float::EPSILON;
-    let cause = "R_z(θ) = [[cos θ, −sin θ, 0], [sin θ, cos θ, 0], [0, 0, 1]]: counter-clockwise seen from +z";
-    if let Err(e) = close3(case, transform_vector(&r, Vec3::X), Vec3::Y, tolerance, cause) {
-        return Some(Err(e));
-    }
-    Some(close3(case, transform_vector(&r, Vec3::Y), -Vec3::X, tolerance, cause).map(|()| "2 cases".into()))
-}
-
-#[cfg(feature = "l03")]
-fn run03(name: &str) -> Option<crate::check::CheckResult> {
-    use crate::check::{close, fail};
-    use l03_polygons_triangles::hit_slabs;
-    use raylab::{Float, Interval, Ray, Vec3};
-    if name != "hit_slabs/hidden-off-origin-box" {
-        return None;
-    }
-    // Box [−1, 2] × [0, 3] × [1, 4]; ray from (0.5, 1, −10) along (0, 0, 2): x and y stay inside,
-    // z enters at (1 + 10)/2 = 5.5 and leaves at (4 + 10)/2 = 7.
-    let case = "box [−1, 2] × [0, 3] × [1, 4], ray from (0.5, 1, −10) along (0, 0, 2)";
-    let ray = Ray::new(Vec3::new(0.5, 1.0, -10.0), Vec3::new(0.0, 0.0, 2.0));
-    let got = hit_slabs(
-        &ray,
-        Vec3::new(-1.0, 0.0, 1.0),
-        Vec3::new(2.0, 3.0, 4.0),
-        Interval::new(0.0, Float::INFINITY),
-    );
-    let Some((enter, exit)) = got else {
-        return Some(Err(fail(case, "(5.5, 7)", "None", "x and y stay inside their slabs; only z limits t")));
-    };
-    // The exit may be widened by 1 + 2γ₃ (a few ulp of 7).
-    let tolerance = 16.0 * Float::EPSILON * 7.0;
-    let cause =
-        "t = (slab − o)/d per axis, in units of dir; enter = max of the nears, exit = min of the fars";
-    if let Err(e) = close(case, enter, 5.5, tolerance, cause) {
-        return Some(Err(e));
-    }
-    Some(close(case, exit, 7.0, tolerance, cause).map(|()| "1 case".into()))
-}
-
-#[cfg(feature = "l05")]
-fn run05(name: &str) -> Option<crate::check::CheckResult> {
-    use crate::check::close;
-    use l05_shading::lambert;
-    use raylab::{Float, Vec3};
-    if name != "lambert/hidden-3-4-5" {
-        return None;
-    }
-    // n = z, l = (0, 0.6, 0.8): cos θ = 0.8; the light mirrored behind the surface gives 0, not −0.8.
-    let n = Vec3::Z;
-    let case = "n = (0, 0, 1), l = (0, 0.6, 0.8)";
-    let tolerance = 4.0 * Float::EPSILON;
-    if let Err(e) = close(case, lambert(n, Vec3::new(0.0, 0.6, 0.8)), 0.8, tolerance, "max(n·l, 0)") {
-        return Some(Err(e));
-    }
-    let case = "n = (0, 0, 1), l = (0, 0.6, −0.8): the light behind the surface";
-    let got = lambert(n, Vec3::new(0.0, 0.6, -0.8));
-    Some(close(case, got, 0.0, 0.0, "max(n·l, 0): no negative light").map(|()| "2 cases".into()))
-}
-
-#[cfg(feature = "l09")]
-fn run09(name: &str) -> Option<crate::check::CheckResult> {
-    use crate::check::close;
-    use l09_acceleration::Aabb;
-    use raylab::{Float, Vec3};
-    if name != "Aabb::surface_area/hidden-1-2-3-box" {
-        return None;
-    }
-    // 2(1·2 + 2·3 + 3·1) = 22, wherever the box is.
-    let b = Aabb::new(Vec3::new(4.0, -1.0, 10.0), Vec3::new(5.0, 1.0, 13.0));
-    let case = "the box [4, 5] × [−1, 1] × [10, 13]";
-    let got = b.surface_area();
-    Some(
-        close(case, got, 22.0, 8.0 * Float::EPSILON * 22.0, "2(dx·dy + dy·dz + dz·dx)")
-            .map(|()| "1 case".into()),
+    declare_checks! {
+            "l02";
+            Meta::unit(
+        "hit_sphere_stable",
+        "an off-axis ray at an off-centre sphere of radius 0.5, both roots ahead",
     )
+    .named_hidden("hidden-off-axis") => hidden(),
+        }
+
+    #[cfg(feature = "l02")]
+    mod code {
+        pub(super) fn hidden() -> crate::check::CheckResult {
+            use crate::check::{close, fail};
+            use l02_ray_casting::hit_sphere_stable;
+            use raylab::{Float, Interval, Ray, Vec3};
+            // Sphere r = 0.5 at (1, 2, −3); the ray from (1, 2.3, 2) along −z passes 0.3 from the
+            // centre: half chord √(0.25 − 0.09) = 0.4, so t = 5 − 0.4 = 4.6 (and 5.4).
+            let case = "sphere r = 0.5 at (1, 2, −3), ray from (1, 2.3, 2) along (0, 0, −1)";
+            let ray = Ray::new(Vec3::new(1.0, 2.3, 2.0), Vec3::new(0.0, 0.0, -1.0));
+            let got =
+                hit_sphere_stable(&ray, Vec3::new(1.0, 2.0, -3.0), 0.5, Interval::new(0.0, Float::INFINITY));
+            let Some(hit) = got else {
+                return Err(fail(
+                    case,
+                    "t = 4.6",
+                    "None",
+                    "the ray passes 0.3 from the centre, inside r = 0.5",
+                ));
+            };
+            // 4.6 is not exact in binary: a few ulp of 5.
+            let tolerance = 64.0 * Float::EPSILON * 5.0;
+            close(case, hit.t, 4.6, tolerance, "the nearer root of the quadratic").map(|()| "1 case".into())
+        }
+    }
+}
+
+mod h03 {
+    use crate::check::Meta;
+
+    declare_checks! {
+        "l03";
+        Meta::unit("hit_slabs", "a ray along +z through an off-origin box: enter and exit t by hand")
+        .named_hidden("hidden-off-origin-box") => hidden(),
+    }
+
+    #[cfg(feature = "l03")]
+    mod code {
+        pub(super) fn hidden() -> crate::check::CheckResult {
+            use crate::check::{close, fail};
+            use l03_polygons_triangles::hit_slabs;
+            use raylab::{Float, Interval, Ray, Vec3};
+            // Box [−1, 2] × [0, 3] × [1, 4]; ray from (0.5, 1, −10) along (0, 0, 2): x and y stay inside,
+            // z enters at (1 + 10)/2 = 5.5 and leaves at (4 + 10)/2 = 7.
+            let case = "box [−1, 2] × [0, 3] × [1, 4], ray from (0.5, 1, −10) along (0, 0, 2)";
+            let ray = Ray::new(Vec3::new(0.5, 1.0, -10.0), Vec3::new(0.0, 0.0, 2.0));
+            let got = hit_slabs(
+                &ray,
+                Vec3::new(-1.0, 0.0, 1.0),
+                Vec3::new(2.0, 3.0, 4.0),
+                Interval::new(0.0, Float::INFINITY),
+            );
+            let Some((enter, exit)) = got else {
+                return Err(fail(
+                    case,
+                    "(5.5, 7)",
+                    "None",
+                    "x and y stay inside their slabs; only z limits t",
+                ));
+            };
+            // The exit may be widened by 1 + 2γ₃ (a few ulp of 7).
+            let tolerance = 16.0 * Float::EPSILON * 7.0;
+            let cause = "t = (slab − o)/d per axis, in units of dir; enter = max of the nears, exit = min of the fars";
+            close(case, enter, 5.5, tolerance, cause)?;
+            close(case, exit, 7.0, tolerance, cause).map(|()| "1 case".into())
+        }
+    }
+}
+
+mod h05 {
+    use crate::check::Meta;
+
+    declare_checks! {
+        "l05";
+        Meta::unit("lambert", "a 3-4-5 direction to the light, and the same light behind the surface")
+        .named_hidden("hidden-3-4-5") => hidden(),
+    }
+
+    #[cfg(feature = "l05")]
+    mod code {
+        pub(super) fn hidden() -> crate::check::CheckResult {
+            use crate::check::close;
+            use l05_shading::lambert;
+            use raylab::{Float, Vec3};
+            // n = z, l = (0, 0.6, 0.8): cos θ = 0.8; the light mirrored behind the surface gives 0, not −0.8.
+            let n = Vec3::Z;
+            let case = "n = (0, 0, 1), l = (0, 0.6, 0.8)";
+            let tolerance = 4.0 * Float::EPSILON;
+            close(case, lambert(n, Vec3::new(0.0, 0.6, 0.8)), 0.8, tolerance, "max(n·l, 0)")?;
+            let case = "n = (0, 0, 1), l = (0, 0.6, −0.8): the light behind the surface";
+            let got = lambert(n, Vec3::new(0.0, 0.6, -0.8));
+            close(case, got, 0.0, 0.0, "max(n·l, 0): no negative light").map(|()| "2 cases".into())
+        }
+    }
+}
+
+mod h07 {
+    use crate::check::Meta;
+
+    declare_checks! {
+        "l07";
+        Meta::unit("refract", "refraction into glass at 30° and back out, against Snell's law by hand")
+        .named_hidden("hidden-snell-both-ways") => hidden(),
+    }
+
+    #[cfg(feature = "l07")]
+    mod code {
+        pub(super) fn hidden() -> crate::check::CheckResult {
+            use crate::check::{close3, fail};
+            use l07_reflection_refraction::refract;
+            use raylab::{Float, Vec3};
+            // i at 30° to the normal n = +y, going down: i = (sin 30°, −cos 30°, 0). Into glass
+            // (η = 1/1.5): sin θt = sin 30° / 1.5 = 1/3, cos θt = √(8/9), t = (1/3, −√(8/9), 0).
+            let (s, c) = (0.5 as Float, (0.75 as Float).sqrt());
+            let i = Vec3::new(s, -c, 0.0);
+            let expected = Vec3::new(1.0 / 3.0, -(8.0 as Float / 9.0).sqrt(), 0.0);
+            let case = "i at 30° from the normal (0, 1, 0), air to glass (η = 1/1.5)";
+            let Some(t) = refract(i, Vec3::Y, 1.0 / 1.5) else {
+                return Err(fail(
+                    case,
+                    "a refracted ray",
+                    "None",
+                    "no total internal reflection going into glass",
+                ));
+            };
+            let tolerance = 16.0 * Float::EPSILON;
+            close3(case, t, expected, tolerance, "t = η i + (η cos θi − cos θt) n")?;
+            // And back out along the reversed ray: the original direction, reversed (reciprocity).
+            let case = "the refracted ray reversed, glass to air (η = 1.5), normal (0, −1, 0) facing it";
+            let Some(back) = refract(-t, -Vec3::Y, 1.5) else {
+                return Err(fail(
+                    case,
+                    "a refracted ray",
+                    "None",
+                    "below the critical angle there is a refracted ray",
+                ));
+            };
+            close3(case, back, -i, tolerance, "Snell's law is reversible").map(|()| "2 cases".into())
+        }
+    }
+}
+
+mod h09 {
+    use crate::check::Meta;
+
+    declare_checks! {
+        "l09";
+        Meta::unit("Aabb::surface_area", "a 1 × 2 × 3 box away from the origin: 22 by hand")
+    .named_hidden("hidden-1-2-3-box") => hidden(),
+    }
+
+    #[cfg(feature = "l09")]
+    mod code {
+        pub(super) fn hidden() -> crate::check::CheckResult {
+            use crate::check::close;
+            use l09_acceleration::Aabb;
+            use raylab::{Float, Vec3};
+            // 2(1·2 + 2·3 + 3·1) = 22, wherever the box is.
+            let b = Aabb::new(Vec3::new(4.0, -1.0, 10.0), Vec3::new(5.0, 1.0, 13.0));
+            let case = "the box [4, 5] × [−1, 1] × [10, 13]";
+            let got = b.surface_area();
+            close(case, got, 22.0, 8.0 * Float::EPSILON * 22.0, "2(dx·dy + dy·dz + dz·dx)")
+                .map(|()| "1 case".into())
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn every_hidden_check_passes_on_the_reference() {
+        for lecture in super::lectures() {
+            if let Some(run) = lecture.run {
+                crate::check::testing::every_check_passes(lecture.checks, run);
+            }
+        }
+    }
 }
