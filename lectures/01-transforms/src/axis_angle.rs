@@ -44,7 +44,7 @@ pub fn rotate_axis(axis: Vec3, angle: Float) -> Mat4 {
 mod tests {
     use super::*;
     use crate::frame::frame;
-    use crate::test_support::{ORTHO_TOL, assert_rotation};
+    use crate::testing::{ORTHO_TOL, assert_rotation};
     use crate::transforms::{rotate_x, rotate_y, rotate_z, transform_vector};
     use approx::assert_abs_diff_eq;
     use raylab::math::consts::{FRAC_PI_2, PI, TAU};

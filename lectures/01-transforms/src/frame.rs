@@ -46,7 +46,7 @@ pub fn is_basis(i: Vec3, j: Vec3, k: Vec3) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::test_support::to_f64;
+    use crate::testing::to_f64;
     use crate::transforms::{transform_point, transform_vector};
     use approx::assert_abs_diff_eq;
     use raylab::Float;

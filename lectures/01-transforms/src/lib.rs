@@ -17,7 +17,7 @@ mod perspective;
 mod scenes;
 mod screen;
 #[cfg(test)]
-mod test_support;
+mod testing;
 mod transforms;
 
 pub use axis_angle::rotate_axis;

@@ -91,7 +91,7 @@ pub fn look_at(eye: Vec3, at: Vec3, up: Vec3) -> Result<Mat4, CameraError> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::test_support::assert_orthonormal;
+    use crate::testing::assert_orthonormal;
     use crate::transforms::transform_point;
     use approx::assert_abs_diff_eq;
     use raylab::Float;

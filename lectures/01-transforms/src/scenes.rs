@@ -11,7 +11,7 @@ use raylab::{Float, Vec3, radians, scene};
 use toml::{Table, Value};
 
 use crate::camera::Camera;
-use crate::test_support::from_f64;
+use crate::testing::from_f64;
 use crate::transforms::transform_point;
 
 fn scene_path(name: &str) -> PathBuf {

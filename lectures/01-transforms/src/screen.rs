@@ -32,7 +32,7 @@ pub fn screen_coords(x: u32, y: u32, width: u32, height: u32) -> (Float, Float) 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::test_support::to_f64;
+    use crate::testing::to_f64;
 
     #[test]
     fn corner_pixels_by_hand() {

@@ -97,7 +97,7 @@ pub fn transform_vector(m: &Mat4, v: Vec3) -> Vec3 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::test_support::{assert_rotation, ulp};
+    use crate::testing::{assert_rotation, ulp};
     use approx::assert_abs_diff_eq;
     use raylab::math::consts::{FRAC_PI_2, PI};
 

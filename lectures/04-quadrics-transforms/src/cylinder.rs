@@ -81,7 +81,7 @@ pub fn hit_cylinder(ray: &Ray, range: Interval) -> Option<Hit> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::test_support::{EPS, angle_to, d3};
+    use crate::testing::{EPS, angle_to, d3};
     use approx::{assert_abs_diff_eq, assert_relative_eq};
     use raylab::math::consts::TAU;
     use raylab::random::Rng;

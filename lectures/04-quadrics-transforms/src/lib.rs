@@ -23,7 +23,7 @@ mod scenes;
 mod transformed;
 
 #[cfg(test)]
-mod test_support;
+mod testing;
 
 pub use capped::{first_crossing, slab_z_span};
 pub use cone::hit_cone;

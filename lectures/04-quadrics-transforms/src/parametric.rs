@@ -20,7 +20,7 @@ pub fn parametric_normal(ds_dalpha: Vec3, ds_dbeta: Vec3) -> Vec3 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::test_support::EPS;
+    use crate::testing::EPS;
     use crate::{hit_cone, hit_cylinder, normal_to_world};
     use approx::assert_abs_diff_eq;
     use raylab::{Float, Interval, Mat4, Ray};

@@ -73,7 +73,7 @@ impl Intersector for BruteForce<'_> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::test_support::{
+    use crate::testing::{
         EPS, angle_to, d3, ellipsoid_f64, ellipsoid_normal_sensitivity, ellipsoid_transform, unit,
     };
     use approx::{assert_abs_diff_eq, assert_relative_eq};
@@ -230,8 +230,8 @@ mod tests {
         for _ in 0..5_000 {
             let (theta, phi) = (rng.range(0.05, 3.09) as f64, rng.range(0.0, TAU) as f64);
             let local = [theta.sin() * phi.cos(), theta.sin() * phi.sin(), theta.cos()];
-            let p = crate::test_support::rotate([0, 1, 2].map(|i| semi[i] * local[i]), axis, angle);
-            let n = crate::test_support::rotate(unit([0, 1, 2].map(|i| local[i] / semi[i])), axis, angle);
+            let p = crate::testing::rotate([0, 1, 2].map(|i| semi[i] * local[i]), axis, angle);
+            let n = crate::testing::rotate(unit([0, 1, 2].map(|i| local[i] / semi[i])), axis, angle);
             let to_float = |v: [f64; 3]| Vec3::new(v[0] as Float, v[1] as Float, v[2] as Float);
             let ray = Ray::new(to_float([0, 1, 2].map(|i| center[i] + p[i] + n[i])), -to_float(n));
             let (o, d) = (d3(ray.origin), d3(ray.dir));

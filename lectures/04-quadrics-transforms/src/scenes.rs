@@ -9,7 +9,7 @@ use raylab::scene::{self, Scene, Shape};
 use raylab::{Float, Hit, Intersector, Vec3};
 
 use crate::BruteForce;
-use crate::test_support::{angle_to, d3, dot, ellipsoid_f64, unit};
+use crate::testing::{angle_to, d3, dot, ellipsoid_f64, unit};
 
 const SCENES: [&str; 4] =
     ["cylinders-cones.toml", "ellipsoid.toml", "extreme-scale.toml", "transformed-mesh.toml"];

@@ -71,7 +71,7 @@ pub fn hit_transformed(
 mod tests {
     use super::*;
     use crate::hit_cylinder;
-    use crate::test_support::{
+    use crate::testing::{
         EPS, angle_to, d3, ellipsoid_f64, ellipsoid_normal_sensitivity, ellipsoid_transform, unit,
         unit_sphere,
     };
@@ -186,7 +186,7 @@ mod tests {
             assert!(angle_to(h.outward_normal(), n) <= 256.0 * EPS as f64, "normal {} vs {n:?}", h.normal);
             // Faced against the ray; front when the ray arrives from outside.
             assert!(h.normal.dot(world.dir) < 0.0);
-            assert_eq!(h.front_face, crate::test_support::dot(n, d3(world.dir)) < 0.0);
+            assert_eq!(h.front_face, crate::testing::dot(n, d3(world.dir)) < 0.0);
         }
     }
 

@@ -175,7 +175,7 @@ impl Aabb {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::test_support::Rng;
+    use crate::testing::Rng;
     use l03_polygons_triangles::hit_slabs;
 
     const EPS: Float = Float::EPSILON;

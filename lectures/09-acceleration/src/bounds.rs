@@ -103,7 +103,7 @@ pub fn object_bounds(object: &Object) -> Aabb {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::test_support::{Rng, d3, mat_f64, to_f64};
+    use crate::testing::{Rng, d3, mat_f64, to_f64};
     use raylab::scene::{Mesh, Transform};
     use std::sync::Arc;
 

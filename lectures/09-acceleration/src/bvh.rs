@@ -372,7 +372,7 @@ fn partition(items: &mut [Item], left: impl Fn(&Item) -> bool) -> usize {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::test_support::{Rng, mixed_scene, object, sphere};
+    use crate::testing::{Rng, mixed_scene, object, sphere};
     use raylab::Vec3;
     use raylab::scene::Mesh;
     use std::sync::Arc;

@@ -43,7 +43,7 @@ pub fn intersector_for(objects: &[Object]) -> Box<dyn Intersector + '_> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::test_support::{object, sphere};
+    use crate::testing::{object, sphere};
     use raylab::scene::Mesh;
     use raylab::{Interval, Mat4, Ray, Vec3};
     use std::sync::Arc;

@@ -742,7 +742,7 @@ pub fn triangle_record(
 mod tests {
     use super::*;
     use crate::Aabb;
-    use crate::test_support::Rng;
+    use crate::testing::Rng;
     use l03_polygons_triangles::hit_triangle;
 
     /// A node holding `boxes` in its first slots, the rest empty.
@@ -1037,12 +1037,12 @@ mod tests {
         // wide node once; a leaf's box in its wide node is the one the four-wide tree gave
         // it, an inner child's box the union of its own children's (as in the four-wide
         // tree, whose boxes are their subtrees' bounds); the wide tree has fewer levels.
-        let torus = crate::test_support::object(
+        let torus = crate::testing::object(
             Shape::Mesh(std::sync::Arc::new(raylab::scene::Mesh::torus(1.0, 0.4, 200, 50))),
             0,
             None,
         );
-        for objects in [crate::test_support::mixed_scene(&mut Rng::new(5)), vec![torus]] {
+        for objects in [crate::testing::mixed_scene(&mut Rng::new(5)), vec![torus]] {
             let bvh = crate::Bvh::build(&objects);
             if bvh.leaves.wide.is_empty() {
                 eprintln!(
@@ -1118,7 +1118,7 @@ mod tests {
         // as the reference visits them are its nodes, or its leaves' lanes, whose
         // primitives are the leaf's, each lane a triangle (with its corners) or a whole
         // object as the leaf holds it.
-        let objects = crate::test_support::mixed_scene(&mut Rng::new(5));
+        let objects = crate::testing::mixed_scene(&mut Rng::new(5));
         let bvh = crate::Bvh::build(&objects);
         assert_eq!(bvh.leaves.children.len(), bvh.nodes.len());
         let mut leaves = 0;

@@ -25,7 +25,7 @@ mod sah;
 #[cfg(test)]
 mod scenes;
 #[cfg(test)]
-mod test_support;
+mod testing;
 mod traverse;
 
 pub use aabb::Aabb;

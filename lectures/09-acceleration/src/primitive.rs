@@ -121,7 +121,7 @@ mod tests {
         // Rays through the torus (normals and uvs interpolated): the nearest of the
         // per-triangle hits, first triangle on ties, is hit_mesh's hit, bit for bit.
         let mesh = Mesh::torus(1.0, 0.3, 12, 8);
-        let mut rng = crate::test_support::Rng::new(4);
+        let mut rng = crate::testing::Rng::new(4);
         let mut hits = 0;
         for _ in 0..500 {
             // From anywhere near, aimed at a random vertex, give or take.
@@ -154,10 +154,10 @@ mod tests {
         let torus = Mesh::torus(1.0, 0.3, 12, 8);
         let vertices = torus.positions.clone();
         let objects = [
-            crate::test_support::object(Shape::Mesh(std::sync::Arc::new(torus)), 2, None),
-            crate::test_support::object(Shape::Mesh(std::sync::Arc::new(huge)), 0, None),
+            crate::testing::object(Shape::Mesh(std::sync::Arc::new(torus)), 2, None),
+            crate::testing::object(Shape::Mesh(std::sync::Arc::new(huge)), 0, None),
         ];
-        let mut rng = crate::test_support::Rng::new(5);
+        let mut rng = crate::testing::Rng::new(5);
         let mut hits = 0;
         for _ in 0..200 {
             // From anywhere near, aimed at a random vertex, give or take.
@@ -189,10 +189,8 @@ mod tests {
         assert!(a.key() < b.key() && b.key() < c.key());
         assert!(Primitive::whole(1).key() < Primitive { object: 2, triangle: 0 }.key());
         // A whole object knows its index and material once hit.
-        let objects = [
-            crate::test_support::sphere(Vec3::ZERO, 1.0, 3),
-            crate::test_support::sphere(Vec3::ZERO, 1.0, 5),
-        ];
+        let objects =
+            [crate::testing::sphere(Vec3::ZERO, 1.0, 3), crate::testing::sphere(Vec3::ZERO, 1.0, 5)];
         let hit = Primitive::whole(1)
             .hit(&objects, &Ray::new(Vec3::Z * 3.0, -Vec3::Z), Interval::POSITIVE)
             .unwrap();

@@ -421,7 +421,7 @@ impl Intersector for Bvh<'_> {
 mod tests {
     use super::*;
     use crate::bvh::MAX_LEAF;
-    use crate::test_support::{Rng, mixed_scene, object, sphere};
+    use crate::testing::{Rng, mixed_scene, object, sphere};
     use l04_quadrics_transforms::BruteForce;
     use raylab::scene::{Mesh, Object, Shape};
     use raylab::stats::{Counter, measure};
