@@ -9,8 +9,38 @@
 
 use std::fmt::Display;
 
-use raylab::{Float, Vec3};
+use raylab::{Float, Hit, Ray, Vec3};
 pub use raylab_protocol::{Failure, Images, Info, Kind, Outcome};
+
+/// (x, y, z).
+pub fn v(x: Float, y: Float, z: Float) -> Vec3 {
+    Vec3::new(x, y, z)
+}
+
+/// The ray from `o` along `d` (as given: not normalised).
+pub fn ray(o: [Float; 3], d: [Float; 3]) -> Ray {
+    Ray::new(Vec3::from_array(o), Vec3::from_array(d))
+}
+
+/// Whether `a` and `b` agree within `tol` in every component.
+pub fn near3(a: Vec3, b: Vec3, tol: Float) -> bool {
+    (a - b).abs().max_element() <= tol
+}
+
+/// `ray from (…) along (…)`.
+pub fn show_ray(r: &Ray) -> String {
+    format!("ray from {} along {}", vec3(r.origin), vec3(r.dir))
+}
+
+/// A hit as the messages write it: t, normal and front_face; or None.
+pub fn show_hit(h: &Option<Hit>) -> String {
+    maybe(h, |h| format!("t = {}, normal {}, front_face {}", num(h.t), vec3(h.normal), h.front_face))
+}
+
+/// A span of t, `(enter, exit)`; or None.
+pub fn show_span(s: &Option<(Float, Float)>) -> String {
+    maybe(s, |(a, b)| format!("({}, {})", num(*a), num(*b)))
+}
 
 /// A check as the lecture tables declare it.
 #[derive(Clone, Copy, Debug)]

@@ -10,7 +10,7 @@ pub(super) use l01_transforms::{
 pub(super) use raylab::math::consts::{FRAC_PI_2, TAU};
 pub(super) use raylab::{Float, Mat4, Ray, Vec3, Vec4, radians};
 
-pub(super) use crate::check::{CheckResult, Failure, close3, ensure, fail, num, vec3};
+pub(super) use crate::check::{CheckResult, Failure, close3, ensure, fail, near3, num, vec3};
 
 pub(super) type VecToMat = fn(Vec3) -> Mat4;
 pub(super) type AngleToMat = fn(Float) -> Mat4;
@@ -84,10 +84,6 @@ pub(super) fn diagnose<'a>(
     default: &'a str,
 ) -> &'a str {
     candidates.iter().find(|(v, _)| (got - *v).abs().max_element() <= tol).map_or(default, |(_, c)| c)
-}
-
-pub(super) fn near3(a: Vec3, b: Vec3, tol: Float) -> bool {
-    (a - b).abs().max_element() <= tol
 }
 
 /// m applied to (v, w) with glam's product: the check's own arithmetic.

@@ -7,18 +7,12 @@ pub(super) use raylab::scene::{Object, Shape};
 pub(super) use raylab::{Float, Hit, Intersector, Interval, Ray, Vec3};
 
 pub(super) use super::SPHERE_CAUSE;
-pub(super) use crate::check::{CheckResult, close, close3, ensure, fail, maybe, num, vec3, wide};
+pub(super) use crate::check::{
+    CheckResult, close, close3, ensure, fail, maybe, num, ray, show_hit, vec3, wide,
+};
 
 pub(super) type SphereFn = fn(&Ray, Vec3, Float, Interval) -> Option<Hit>;
 
 /// Tolerance on t, points and normals of a unit sphere a few units away:
 /// the three methods round differently, each by a few ulp of 1.
 pub(super) const TOL: Float = 64.0 * Float::EPSILON;
-
-pub(super) fn ray(o: [Float; 3], d: [Float; 3]) -> Ray {
-    Ray::new(Vec3::from(o), Vec3::from(d))
-}
-
-pub(super) fn show(hit: &Option<Hit>) -> String {
-    maybe(hit, |h| format!("t = {}, normal {}, front_face {}", num(h.t), vec3(h.normal), h.front_face))
-}

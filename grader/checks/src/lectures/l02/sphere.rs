@@ -9,19 +9,19 @@ pub(super) fn sphere_cases(hit: SphereFn) -> CheckResult {
     // From z = 5 straight at the sphere: the near root t = 5 − 1 = 4, at (0, 0, 1), normal +z.
     let case = "ray from (0, 0, 5) along (0, 0, −1), unit sphere at the origin";
     let got = hit(&ray([0.0, 0.0, 5.0], [0.0, 0.0, -1.0]), origin, 1.0, all);
-    let Some(h) = got else { return Err(fail(case, "t = 4", show(&got), SPHERE_CAUSE)) };
+    let Some(h) = got else { return Err(fail(case, "t = 4", show_hit(&got), SPHERE_CAUSE)) };
     close(case, h.t, 4.0, TOL, "the nearer root is t = (−b − √Δ)/2a")?;
     close3(case, h.normal, Vec3::Z, TOL, "the outward normal is (p − c)/r")?;
     ensure(h.front_face, case, "front_face true", "false", "a ray from outside meets the front face")?;
     // Not a unit direction: t is in units of dir, so |d| = 2 halves it.
     let case = "ray from (0, 0, 5) along (0, 0, −2): dir is not unit";
     let got = hit(&ray([0.0, 0.0, 5.0], [0.0, 0.0, -2.0]), origin, 1.0, all);
-    let Some(h) = got else { return Err(fail(case, "t = 2", show(&got), SPHERE_CAUSE)) };
+    let Some(h) = got else { return Err(fail(case, "t = 2", show_hit(&got), SPHERE_CAUSE)) };
     close(case, h.t, 2.0, TOL, "t must be in units of dir: normalising d without dividing t by |d| gives 4")?;
     // From the centre: the only root ahead is t = 1, met from inside.
     let case = "ray from the centre along (1, 0, 0)";
     let got = hit(&ray([0.0, 0.0, 0.0], [1.0, 0.0, 0.0]), origin, 1.0, all);
-    let Some(h) = got else { return Err(fail(case, "t = 1", show(&got), SPHERE_CAUSE)) };
+    let Some(h) = got else { return Err(fail(case, "t = 1", show_hit(&got), SPHERE_CAUSE)) };
     close(case, h.t, 1.0, TOL, "behind the origin the near root is negative: take the far one")?;
     close3(
         case,
@@ -34,7 +34,7 @@ pub(super) fn sphere_cases(hit: SphereFn) -> CheckResult {
     // The near root outside the range: the far root t = 6 remains.
     let case = "ray from (0, 0, 5) along −z, range (4.5, ∞)";
     let got = hit(&ray([0.0, 0.0, 5.0], [0.0, 0.0, -1.0]), origin, 1.0, Interval::new(4.5, Float::INFINITY));
-    let Some(h) = got else { return Err(fail(case, "t = 6", show(&got), SPHERE_CAUSE)) };
+    let Some(h) = got else { return Err(fail(case, "t = 6", show_hit(&got), SPHERE_CAUSE)) };
     close(case, h.t, 6.0, TOL, "when the near root is outside the range, try the far one")?;
     // Misses: beside the sphere, and pointing away.
     for (case, r) in [
@@ -42,7 +42,7 @@ pub(super) fn sphere_cases(hit: SphereFn) -> CheckResult {
         ("ray from (0, 0, 5) along +z points away", ray([0.0, 0.0, 5.0], [0.0, 0.0, 1.0])),
     ] {
         let got = hit(&r, origin, 1.0, all);
-        ensure(got.is_none(), case, "None", show(&got), "both roots must be inside the range (t > 0)")?;
+        ensure(got.is_none(), case, "None", show_hit(&got), "both roots must be inside the range (t > 0)")?;
     }
     // Tangent: Δ = 0 exactly (b = −10, a = 1, c = 25), one hit at t = 5.
     let case = "ray from (0, 1, 5) along −z grazes the sphere at (0, 1, 0)";
@@ -51,7 +51,7 @@ pub(super) fn sphere_cases(hit: SphereFn) -> CheckResult {
         return Err(fail(
             case,
             "t = 5",
-            show(&got),
+            show_hit(&got),
             "a zero discriminant is one (double) root: test Δ < 0, not Δ ≤ 0",
         ));
     };
@@ -59,7 +59,7 @@ pub(super) fn sphere_cases(hit: SphereFn) -> CheckResult {
     // Off-centre sphere of radius 2: from (1, 1, 10) along −z, the near root is t = 10 − (−3 + 2) = 11.
     let case = "sphere r = 2 at (1, 1, −3), ray from (1, 1, 10) along −z";
     let got = hit(&ray([1.0, 1.0, 10.0], [0.0, 0.0, -1.0]), Vec3::new(1.0, 1.0, -3.0), 2.0, all);
-    let Some(h) = got else { return Err(fail(case, "t = 11", show(&got), SPHERE_CAUSE)) };
+    let Some(h) = got else { return Err(fail(case, "t = 11", show_hit(&got), SPHERE_CAUSE)) };
     close(case, h.t, 11.0, 16.0 * TOL, "f = o − c, with c the sphere's centre")?;
     close3(case, h.normal, Vec3::Z, TOL, "the normal is (p − c)/r: divide by the radius")?;
     Ok("7 cases".into())

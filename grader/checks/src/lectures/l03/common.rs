@@ -14,7 +14,10 @@ pub(super) use raylab::random::Rng;
 pub(super) use raylab::scene::Mesh;
 pub(super) use raylab::{Float, Hit, Interval, Ray, Vec2, Vec3};
 
-pub(super) use crate::check::{CheckResult, Failure, close, close3, ensure, fail, maybe, num, vec3};
+pub(super) use crate::check::{
+    CheckResult, Failure, close, close3, ensure, fail, maybe, near3, num, ray, show_hit, show_ray, show_span,
+    vec3,
+};
 pub(super) use crate::exact::exact_hits;
 
 pub(super) type SlabsFn = fn(&Ray, Vec3, Vec3, Interval) -> Option<(Float, Float)>;
@@ -35,23 +38,3 @@ pub(super) type MeshFn = fn(&Ray, &Mesh, Interval) -> Option<Hit>;
 pub(super) const TOL: Float = 16.0 * Float::EPSILON;
 
 pub(super) const ALL: Interval = Interval::POSITIVE;
-
-pub(super) fn ray(o: [Float; 3], d: [Float; 3]) -> Ray {
-    Ray::new(Vec3::from_array(o), Vec3::from_array(d))
-}
-
-pub(super) fn show_ray(r: &Ray) -> String {
-    format!("ray from {} along {}", vec3(r.origin), vec3(r.dir))
-}
-
-pub(super) fn show_hit(h: &Option<Hit>) -> String {
-    maybe(h, |h| format!("t = {}, normal {}, front_face {}", num(h.t), vec3(h.normal), h.front_face))
-}
-
-pub(super) fn show_span(s: &Option<(Float, Float)>) -> String {
-    maybe(s, |(a, b)| format!("({}, {})", num(*a), num(*b)))
-}
-
-pub(super) fn near3(a: Vec3, b: Vec3, tol: Float) -> bool {
-    (a - b).abs().max_element() <= tol
-}

@@ -12,7 +12,10 @@ pub(super) use raylab::random::Rng;
 pub(super) use raylab::scene::Transform;
 pub(super) use raylab::{Float, Hit, Interval, Mat4, Ray, Vec2, Vec3};
 
-pub(super) use crate::check::{CheckResult, Failure, close, close3, ensure, fail, maybe, num, vec3};
+pub(super) use crate::check::{
+    CheckResult, Failure, close, close3, ensure, fail, maybe, near3, num, ray, show_hit, show_ray, show_span,
+    vec3,
+};
 
 pub(super) type SpanFn = fn(Float, Float) -> Option<(Float, Float)>;
 pub(super) type CrossingFn = fn((Float, Float), (Float, Float), Interval) -> Option<(Float, bool)>;
@@ -30,23 +33,3 @@ pub(super) const TOL: Float = 16.0 * Float::EPSILON;
 pub(super) const ALL: Interval = Interval::POSITIVE;
 
 pub(super) const SQRT_HALF: Float = std::f64::consts::FRAC_1_SQRT_2 as Float;
-
-pub(super) fn ray(o: [Float; 3], d: [Float; 3]) -> Ray {
-    Ray::new(Vec3::from_array(o), Vec3::from_array(d))
-}
-
-pub(super) fn show_ray(r: &Ray) -> String {
-    format!("ray from {} along {}", vec3(r.origin), vec3(r.dir))
-}
-
-pub(super) fn show_hit(h: &Option<Hit>) -> String {
-    maybe(h, |h| format!("t = {}, normal {}, front_face {}", num(h.t), vec3(h.normal), h.front_face))
-}
-
-pub(super) fn near3(a: Vec3, b: Vec3, tol: Float) -> bool {
-    (a - b).abs().max_element() <= tol
-}
-
-pub(super) fn show_span(s: &Option<(Float, Float)>) -> String {
-    maybe(s, |(a, b)| format!("({}, {})", num(*a), num(*b)))
-}

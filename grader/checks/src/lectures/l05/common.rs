@@ -10,7 +10,7 @@ pub(super) use l05_shading::{
 pub(super) use raylab::scene::{Attenuation, Light, LightKind, Material, Specular};
 pub(super) use raylab::{BLACK, Color, Float, Hit, Ray, Vec2, Vec3, WHITE, radians};
 
-pub(super) use crate::check::{CheckResult, close, close3, ensure, num, vec3};
+pub(super) use crate::check::{CheckResult, close, close3, ensure, num, v, vec3};
 
 pub(super) type DiskFn = fn(Vec2) -> Vec2;
 pub(super) type SampleFn = fn(&Light, Vec3, Vec2) -> LightSample;
@@ -25,10 +25,6 @@ pub(super) type ShadeLocalFn = fn(&Material, Color, &Hit, Vec3, &[Light], Color)
 
 pub(super) const EPS: Float = Float::EPSILON;
 pub(super) const COLOR: Color = Color::new(1.0, 0.5, 0.25);
-
-pub(super) fn v(x: Float, y: Float, z: Float) -> Vec3 {
-    Vec3::new(x, y, z)
-}
 
 /// The unit vector in the xy plane at `degrees` from +y (the normal) toward +x.
 pub(super) fn at_angle(degrees: Float) -> Vec3 {

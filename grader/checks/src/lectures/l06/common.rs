@@ -15,7 +15,7 @@ pub(super) use raylab::stats::{Counter, measure};
 pub(super) use raylab::{BLACK, Color, Float, Hit, Intersector, Interval, Ray, Vec2, Vec3, WHITE, radians};
 pub(super) use std::sync::atomic::{AtomicUsize, Ordering};
 
-pub(super) use crate::check::{CheckResult, Failure, close3, ensure, num, vec3, wide, wide3};
+pub(super) use crate::check::{CheckResult, Failure, close3, ensure, num, v, vec3, wide, wide3};
 
 pub(super) type OffsetFn = fn(Vec3, Vec3, Vec3, Vec3) -> Vec3;
 pub(super) type OccludedFn = fn(&dyn Intersector, Vec3, &LightSample) -> bool;
@@ -27,10 +27,6 @@ pub(super) type StratifiedFn = fn(u32, &mut Rng) -> Vec<Vec2>;
 pub(super) type AreaFn = fn(&dyn Intersector, &[Material], &Surface, &Light, ShadowSettings) -> Color;
 
 pub(super) const EPS: Float = Float::EPSILON;
-
-pub(super) fn v(x: Float, y: Float, z: Float) -> Vec3 {
-    Vec3::new(x, y, z)
-}
 
 /// The gap from |x| to the next float up.
 pub(super) fn ulp(x: Float) -> Float {

@@ -9,7 +9,7 @@ pub(super) use l07_reflection_refraction::{
 };
 pub(super) use raylab::{Float, Hit, Interval, Ray, Vec3};
 
-pub(super) use crate::check::{CheckResult, close, close3, ensure, fail, maybe, num, vec3, wide, wide3};
+pub(super) use crate::check::{CheckResult, close, close3, ensure, fail, maybe, num, v, vec3, wide, wide3};
 
 pub(super) type FresnelFn = fn(Float, Float, Float) -> Float;
 pub(super) type MirrorFn = fn(Vec3, Vec3) -> Vec3;
@@ -17,10 +17,6 @@ pub(super) type InterfaceFn = fn(&Hit, Float) -> Interface;
 pub(super) type RefractFn = fn(Vec3, Vec3, Float) -> Option<Vec3>;
 
 pub(super) const EPS: Float = Float::EPSILON;
-
-pub(super) fn v(x: Float, y: Float, z: Float) -> Vec3 {
-    Vec3::new(x, y, z)
-}
 
 /// cos of an angle in degrees, computed in f64 and rounded once.
 pub(super) fn cos_deg(degrees: f64) -> Float {

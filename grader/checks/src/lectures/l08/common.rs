@@ -7,7 +7,7 @@ pub(super) use raylab::scene::{self, Light, LightKind, Material, Object, Shape};
 pub(super) use raylab::stats::{Counter, RayStats, measure};
 pub(super) use raylab::{Color, Float, Image, Ray, Scene, Vec3};
 
-pub(super) use crate::check::{CheckResult, close, ensure, fail, vec3};
+pub(super) use crate::check::{CheckResult, close, ensure, fail, v, vec3};
 
 pub(super) type TraceFn = fn(&World, &Ray, u32, Float, &TraceSettings) -> Color;
 pub(super) type RenderFn = fn(&World, &Camera, u32, u32, &TraceSettings) -> (Image, RayStats);
@@ -18,10 +18,6 @@ pub(super) const EPS: Float = Float::EPSILON;
 /// taken in whatever order the student's code takes them. 64ε is far above that (a few ε)
 /// and far below any mistake (the smallest one here changes a colour by 0.001).
 pub(super) const COLOR_TOL: Float = 64.0 * EPS;
-
-pub(super) fn v(x: Float, y: Float, z: Float) -> Vec3 {
-    Vec3::new(x, y, z)
-}
 
 /// A scene of these objects, materials and lights, seen from (0, 0, 5) toward the origin.
 pub(super) fn scene(

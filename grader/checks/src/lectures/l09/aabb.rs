@@ -4,6 +4,7 @@
 #![allow(clippy::unnecessary_cast)]
 
 use super::common::*;
+use crate::check::{ray, show_span};
 
 pub(super) fn union_cases(union: UnionFn) -> CheckResult {
     // Componentwise min of the mins and max of the maxes; every value exact.
@@ -74,14 +75,6 @@ pub(super) fn area_cases(area: AreaFn) -> CheckResult {
         ensure(got == expected, case, num(expected), num(got), cause)?;
     }
     Ok("6 boxes".into())
-}
-
-pub(super) fn ray(o: [Float; 3], d: [Float; 3]) -> Ray {
-    Ray::new(Vec3::from_array(o), Vec3::from_array(d))
-}
-
-pub(super) fn show_span(span: &Option<(Float, Float)>) -> String {
-    maybe(span, |(a, b)| format!("({}, {})", num(*a), num(*b)))
 }
 
 /// The widening of the box test (2γ₃ < 4ε, relative) plus a rounding or two: 8ε of t.

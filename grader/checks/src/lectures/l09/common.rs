@@ -13,7 +13,7 @@ pub(super) use raylab::random::Rng;
 pub(super) use raylab::scene::{Mesh, Object, Shape};
 pub(super) use raylab::{Float, Hit, Intersector, Interval, Mat4, Ray, Vec3};
 
-pub(super) use crate::check::{CheckResult, Failure, close, ensure, fail, maybe, num, vec3};
+pub(super) use crate::check::{CheckResult, Failure, close, ensure, fail, maybe, num, v, vec3};
 
 pub(super) type UnionFn = fn(Aabb, Aabb) -> Aabb;
 pub(super) type UnionPointFn = fn(Aabb, Vec3) -> Aabb;
@@ -27,10 +27,6 @@ pub(super) type ClosestFn = fn(&Bvh, &Ray, Interval) -> Option<Hit>;
 pub(super) type AnyFn = fn(&Bvh, &Ray, Interval) -> bool;
 
 pub(super) const EPS: Float = Float::EPSILON;
-
-pub(super) fn v(x: Float, y: Float, z: Float) -> Vec3 {
-    Vec3::new(x, y, z)
-}
 
 pub(super) fn show(b: &Aabb) -> String {
     format!("[{} … {}]", vec3(b.min), vec3(b.max))
