@@ -149,6 +149,49 @@ fn the_reference_scores_full_marks() {
     assert!(failing.is_empty(), "{}\n{stderr}", failing.join("\n"));
     assert_eq!(grade["score"], grade["max_score"]);
     assert!(checks(&grade).len() >= 150, "{} checks", checks(&grade).len());
+    the_checks_and_the_exercises_name_each_other(&grade);
+}
+
+/// Every exercise (a `todo!("NN/exercise: …")` of the handout) has a check of its own, and
+/// every unit or extreme check tests an exercise: the checks' declarations and the lectures'
+/// SOLUTION regions are two lists in two crates, kept in step here.
+fn the_checks_and_the_exercises_name_each_other(grade: &Value) {
+    let dir = scratch().join("handout-exercises");
+    let out =
+        Command::new(grader_binary()).args(["handout", "--force", dir.to_str().unwrap()]).output().unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let mut exercises = std::collections::BTreeSet::new();
+    let mut stack = vec![dir.join("lectures")];
+    while let Some(folder) = stack.pop() {
+        for entry in std::fs::read_dir(&folder).unwrap() {
+            let path = entry.unwrap().path();
+            if path.is_dir() {
+                stack.push(path);
+            } else if path.extension().is_some_and(|e| e == "rs") {
+                let text = std::fs::read_to_string(&path).unwrap();
+                for stub in text.split("todo!(\"").skip(1) {
+                    exercises.insert(stub.split(": ").next().unwrap().to_owned());
+                }
+            }
+        }
+    }
+    assert!(exercises.len() >= 80, "{} exercises in the handout", exercises.len());
+    let checked: std::collections::BTreeSet<String> = checks(grade)
+        .iter()
+        .filter(|c| c["info"]["kind"] != "image")
+        .map(|c| {
+            format!("{}/{}", c["info"]["lecture"].as_str().unwrap(), c["info"]["exercise"].as_str().unwrap())
+        })
+        .collect();
+    // Lecture 02's three images are checked by the geometry image checks (`02/geometry/*`
+    // compares the id, depth and normal images a student's functions make), not by a check
+    // under their own name.
+    let by_geometry = ["02/depth_image", "02/normal_image", "02/object_id_image"];
+    let unchecked: Vec<_> =
+        exercises.difference(&checked).filter(|e| !by_geometry.contains(&e.as_str())).collect();
+    let no_exercise: Vec<_> = checked.difference(&exercises).collect();
+    assert!(unchecked.is_empty(), "exercises without a check: {unchecked:?}");
+    assert!(no_exercise.is_empty(), "checks of no exercise: {no_exercise:?}");
 }
 
 #[test]
