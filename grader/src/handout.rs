@@ -39,9 +39,14 @@ const LEFT_OUT: &[&str] = &[
     "book/regenerate.sh",
     "book/tradeoffs.sh",
     "grader/checks/tests",
+    "grader/checks/src/tools/tradeoffs",
     "ARCHITECTURE.md",
     STUDENT_README,
 ];
+
+/// The checks' sources: their tests (planted mistakes, some of them the
+/// reference with a switch) stay out of the handout.
+const CHECKS_SOURCE: &str = "grader/checks/src/";
 
 /// The student's `README.md`, kept in the instructors' tree under this name.
 const STUDENT_README: &str = "grader/STUDENT-README.md";
@@ -102,6 +107,9 @@ pub fn write(root: &Path, dir: &Path, force: bool) -> Result<(), String> {
             if relative_str.ends_with("/src/lib.rs") {
                 text = allow_stub_warnings(&text);
             }
+        }
+        if relative_str.starts_with(CHECKS_SOURCE) && relative_str.ends_with(".rs") {
+            text = without_tests(&text);
         }
         if relative_str == "Cargo.toml" {
             text = drop_missing_members(&text, &root);
@@ -261,6 +269,28 @@ fn impl_type(line: &str) -> Option<String> {
     let rest = rest.split(" for ").last()?;
     let name: String = rest.trim().chars().take_while(|c| c.is_alphanumeric() || *c == '_').collect();
     (!name.is_empty()).then_some(name)
+}
+
+/// A checks source without its tests: everything from the first top-level
+/// `#[cfg(test)]` (or `#[cfg(all(test, …))]`) on. In the checks crate a file's tests come last (its planted
+/// mistakes are a check's tests and may hold the reference with a switch: an
+/// exercise solved); the handout compiling without a warning shows that nothing
+/// the checks use came after them.
+fn without_tests(text: &str) -> String {
+    let lines: Vec<&str> = text.split_inclusive('\n').collect();
+    let is_test_gate = |l: &&str| {
+        l.starts_with("#[cfg(") && l.split(|c: char| !c.is_alphanumeric() && c != '_').any(|w| w == "test")
+    };
+    let Some(mut cut) = lines.iter().position(is_test_gate) else {
+        return text.to_owned();
+    };
+    // With the doc comment and attributes above it.
+    while cut > 0 && (lines[cut - 1].starts_with("///") || lines[cut - 1].starts_with("#[")) {
+        cut -= 1;
+    }
+    let mut out = lines[..cut].concat().trim_end().to_owned();
+    out.push('\n');
+    out
 }
 
 /// Adds, after the crate's doc comment, an `allow` for what the stubs leave unused.

@@ -125,13 +125,13 @@ enum Cmd {
         #[arg(trailing_var_arg = true, allow_hyphen_values = true)]
         args: Vec<String>,
     },
+    // INSTRUCTOR BEGIN
     /// Speed against accuracy, side by side (run with --release).
     #[command(disable_help_flag = true)]
     Tradeoffs {
         #[arg(trailing_var_arg = true, allow_hyphen_values = true)]
         args: Vec<String>,
     },
-    // INSTRUCTOR BEGIN
     /// The course's maintenance (instructors).
     Dev {
         #[command(subcommand)]
@@ -182,8 +182,8 @@ fn main() -> ExitCode {
         Some(Cmd::Render { args }) => forward("render", &args),
         Some(Cmd::Bless { args }) => forward("bless", &args),
         Some(Cmd::BenchRays { args }) => forward("bench-rays", &args),
-        Some(Cmd::Tradeoffs { args }) => forward("tradeoffs", &args),
         // INSTRUCTOR BEGIN
+        Some(Cmd::Tradeoffs { args }) => forward("tradeoffs", &args),
         Some(Cmd::Dev { command: DevCmd::Sync { check } }) => sync::sync(&workspace::own_root(), check),
         // INSTRUCTOR END
     };

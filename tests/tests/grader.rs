@@ -217,6 +217,7 @@ fn the_handout_compiles_and_scores_zero_without_a_crash() {
     for left_out in ["ARCHITECTURE.md", "grader/STUDENT-README.md", "book/ci.sh", "tests", "benches"] {
         assert!(!dir.join(left_out).exists(), "the handout has {left_out}");
     }
+    no_solution_is_copied_into(&dir);
     let target = scratch().join("handout-target");
     // It compiles, tests and all, without a warning (from the stubs, or from instructor code
     // left half out: a field only `grader dev sync` reads) (checked, not built: its
@@ -264,6 +265,60 @@ fn the_handout_compiles_and_scores_zero_without_a_crash() {
         );
     }
     watch_regrades_the_lecture_that_changes(&dir, &target);
+}
+
+/// Nothing that ships is an exercise solved: no three consecutive lines of a SOLUTION
+/// region (lines of code with an operator or a call, 12 characters or more, spaces
+/// folded) stand anywhere in the handout's Rust files. It caught the checks' planted
+/// mistakes (the reference with a switch), the tradeoffs' naive variants and f64
+/// truths, and a lecture test's misprinted matrix three signs from the solution.
+fn no_solution_is_copied_into(handout: &Path) {
+    fn lines(text: &str) -> Vec<(usize, String)> {
+        text.lines()
+            .enumerate()
+            .map(|(n, l)| (n + 1, l.split_whitespace().collect::<Vec<_>>().join(" ")))
+            .filter(|(_, l)| !l.starts_with("//") && l.len() >= 12 && l.contains(['=', '+', '-', '*', '/', '(']))
+            .collect()
+    }
+    fn rust_files(dir: &Path, out: &mut Vec<PathBuf>) {
+        for entry in std::fs::read_dir(dir).unwrap() {
+            let path = entry.unwrap().path();
+            if path.is_dir() && !path.ends_with("target") {
+                rust_files(&path, out);
+            } else if path.extension().is_some_and(|e| e == "rs") {
+                out.push(path);
+            }
+        }
+    }
+    const WINDOW: usize = 3;
+    let mut solutions = std::collections::HashMap::new();
+    let mut files = Vec::new();
+    rust_files(&root().join("lectures"), &mut files);
+    for file in &files {
+        let text = std::fs::read_to_string(file).unwrap();
+        for region in text.split("// SOLUTION BEGIN").skip(1) {
+            let body = region.split("// SOLUTION END").next().unwrap();
+            let body = lines(body);
+            for window in body.windows(WINDOW) {
+                let key: Vec<&str> = window.iter().map(|(_, l)| l.as_str()).collect();
+                solutions.entry(key.join("\n")).or_insert_with(|| file.display().to_string());
+            }
+        }
+    }
+    assert!(solutions.len() > 300, "{} windows of solution lines", solutions.len());
+    let mut copies = Vec::new();
+    let mut shipped = Vec::new();
+    rust_files(handout, &mut shipped);
+    for file in &shipped {
+        let text = std::fs::read_to_string(file).unwrap();
+        for window in lines(&text).windows(WINDOW) {
+            let key: Vec<&str> = window.iter().map(|(_, l)| l.as_str()).collect();
+            if let Some(from) = solutions.get(&key.join("\n")) {
+                copies.push(format!("{}:{} copies {from}:\n{}", file.display(), window[0].0, key.join("\n")));
+            }
+        }
+    }
+    assert!(copies.is_empty(), "the handout holds solution lines:\n{}", copies.join("\n\n"));
 }
 
 /// `grader watch` in the handout: editing a file of lecture 02 re-grades lecture 02.

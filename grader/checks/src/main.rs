@@ -67,10 +67,12 @@ enum Command {
     /// Primary-ray throughput of lecture 09's BVH on a mesh (run with --release).
     #[cfg(feature = "complete")]
     BenchRays(tools::bench::BenchArgs),
+    // INSTRUCTOR BEGIN
     /// Speed against accuracy, side by side: tables and plots under target/grader/tradeoffs (run with
     /// --release).
     #[cfg(feature = "complete")]
     Tradeoffs(tools::tradeoffs::TradeoffsArgs),
+    // INSTRUCTOR END
 }
 
 fn main() -> ExitCode {
@@ -88,8 +90,10 @@ fn main() -> ExitCode {
         Command::Bless { lecture } => images::bless(lecture.as_deref()),
         #[cfg(feature = "complete")]
         Command::BenchRays(args) => tools::bench::bench_rays(&args),
+        // INSTRUCTOR BEGIN
         #[cfg(feature = "complete")]
         Command::Tradeoffs(args) => tools::tradeoffs::tradeoffs(&args),
+        // INSTRUCTOR END
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

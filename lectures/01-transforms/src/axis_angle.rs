@@ -139,6 +139,8 @@ mod tests {
         }
     }
 
+    // INSTRUCTOR BEGIN
+    // (Out of the handout: the slide's matrix differs from the solution by three signs.)
     /// Rodrigues with the sin terms of the upper triangle given the sign of
     /// the lower one, as the slides print it: s·[a]× becomes symmetric.
     fn slide_matrix(axis: Vec3, angle: Float) -> Mat4 {
@@ -174,6 +176,7 @@ mod tests {
         let gram = wrong.transpose() * wrong;
         assert!((gram - Mat4::IDENTITY).abs().to_cols_array().iter().any(|&e| e > 0.1), "{gram:?}");
     }
+    // INSTRUCTOR END
 
     #[test]
     fn all_sin_signs_flipped_turns_the_wrong_way() {

@@ -1,3 +1,4 @@
+// INSTRUCTOR ONLY: a test of the checks crate (the handout leaves the checks' tests out).
 //! Bad scenes through `grader render`, as a student writing their own meets
 //! them: every lecture scene and a 6.837 scene with numbers at the edge of
 //! the precision's range, numbers made large together so that their
