@@ -277,7 +277,9 @@ fn no_solution_is_copied_into(handout: &Path) {
         text.lines()
             .enumerate()
             .map(|(n, l)| (n + 1, l.split_whitespace().collect::<Vec<_>>().join(" ")))
-            .filter(|(_, l)| !l.starts_with("//") && l.len() >= 12 && l.contains(['=', '+', '-', '*', '/', '(']))
+            .filter(|(_, l)| {
+                !l.starts_with("//") && l.len() >= 12 && l.contains(['=', '+', '-', '*', '/', '('])
+            })
             .collect()
     }
     fn rust_files(dir: &Path, out: &mut Vec<PathBuf>) {

@@ -12,15 +12,7 @@ use std::fmt::Display;
 use raylab::{Float, Hit, Ray, Vec3};
 pub use raylab_protocol::{Failure, Images, Info, Kind, Outcome};
 
-/// (x, y, z).
-pub fn v(x: Float, y: Float, z: Float) -> Vec3 {
-    Vec3::new(x, y, z)
-}
-
-/// The ray from `o` along `d` (as given: not normalised).
-pub fn ray(o: [Float; 3], d: [Float; 3]) -> Ray {
-    Ray::new(Vec3::from_array(o), Vec3::from_array(d))
-}
+pub use raylab_testing::{ray, v, wide, wide3};
 
 /// Whether `a` and `b` agree within `tol` in every component.
 pub fn near3(a: Vec3, b: Vec3, tol: Float) -> bool {
@@ -168,17 +160,6 @@ pub fn close3(
 ) -> Result<(), Failure> {
     let ok = (got - expected).abs().max_element() <= tolerance;
     ensure(ok, case, format!("{} (± {tolerance:.1e} each)", vec3(expected)), vec3(got), cause)
-}
-
-/// `x` in f64, whatever `Float` is: for ground truth computed wider.
-#[allow(clippy::useless_conversion, reason = "Float is f64 with the kit's f64 feature")]
-pub fn wide(x: Float) -> f64 {
-    f64::from(x)
-}
-
-/// `v` in f64, component by component.
-pub fn wide3(v: Vec3) -> [f64; 3] {
-    [wide(v.x), wide(v.y), wide(v.z)]
 }
 
 /// A number printed for a student: four decimals, or scientific when tiny or huge.

@@ -13,8 +13,6 @@
 #![cfg_attr(not(feature = "complete"), allow(unused))]
 
 mod check;
-#[cfg(any(feature = "l03", feature = "complete"))]
-mod exact;
 mod images;
 mod lectures;
 mod platform;

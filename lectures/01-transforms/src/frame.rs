@@ -46,10 +46,10 @@ pub fn is_basis(i: Vec3, j: Vec3, k: Vec3) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::testing::to_f64;
     use crate::transforms::{transform_point, transform_vector};
     use approx::assert_abs_diff_eq;
     use raylab::Float;
+    use raylab_testing::wide;
 
     #[test]
     fn frame_coordinates_name_origin_plus_combination_of_axes() {
@@ -129,7 +129,7 @@ mod tests {
         for (a, b, c) in [((1.0, 0.0), (0.0, 1.0), (3.0, -2.0)), ((5.0, 7.0), (-3.0, 2.0), (11.0, -13.0))] {
             let (i, j, k) = (on_plane(a.0, a.1), on_plane(b.0, b.1), on_plane(c.0, c.1));
             // Independent check in f64: the determinant is exactly 0.
-            let f = |v: Vec3| [to_f64(v.x), to_f64(v.y), to_f64(v.z)];
+            let f = |v: Vec3| [wide(v.x), wide(v.y), wide(v.z)];
             let (p, q, r) = (f(i), f(j), f(k));
             let det64 = p[0] * (q[1] * r[2] - q[2] * r[1]) - p[1] * (q[0] * r[2] - q[2] * r[0])
                 + p[2] * (q[0] * r[1] - q[1] * r[0]);

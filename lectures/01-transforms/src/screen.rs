@@ -32,7 +32,7 @@ pub fn screen_coords(x: u32, y: u32, width: u32, height: u32) -> (Float, Float) 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::testing::to_f64;
+    use raylab_testing::wide;
 
     #[test]
     fn corner_pixels_by_hand() {
@@ -85,8 +85,8 @@ mod tests {
                 let sx = 2.0 * (x as f64 + 0.5) / w as f64 - 1.0;
                 let sy = 1.0 - 2.0 * (y as f64 + 0.5) / h as f64;
                 let (ours_x, ours_y) = screen_coords(x, y, w, h);
-                let err = (to_f64(ours_x) - sx).abs().max((to_f64(ours_y) - sy).abs());
-                assert!(err <= 2.0 * to_f64(Float::EPSILON), "({x}, {y}) of {w}×{h}: off by {err:e}");
+                let err = (wide(ours_x) - sx).abs().max((wide(ours_y) - sy).abs());
+                assert!(err <= 2.0 * wide(Float::EPSILON), "({x}, {y}) of {w}×{h}: off by {err:e}");
             }
         }
     }

@@ -8,22 +8,10 @@ use raylab::{Float, Mat4, Vec3, Vec4};
 /// 1e-6) and 1.8e-15 in f64.
 pub const ORTHO_TOL: Float = 8.0 * Float::EPSILON;
 
-/// `x` in f64, whatever `Float` is (for independent checks in double precision).
-#[allow(clippy::unnecessary_cast)]
-pub fn to_f64(x: Float) -> f64 {
-    x as f64
-}
-
 /// `x` rounded to `Float`.
 #[allow(clippy::unnecessary_cast)]
 pub fn from_f64(x: f64) -> Float {
     x as Float
-}
-
-/// The spacing of floats at `x` (one ulp), for |x| a normal number.
-pub fn ulp(x: Float) -> Float {
-    let exponent = x.abs().log2().floor() as i32;
-    (2.0 as Float).powi(exponent) * Float::EPSILON
 }
 
 /// Asserts that the three vectors are unit length, pairwise orthogonal and

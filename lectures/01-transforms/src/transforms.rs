@@ -97,9 +97,10 @@ pub fn transform_vector(m: &Mat4, v: Vec3) -> Vec3 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::testing::{assert_rotation, ulp};
+    use crate::testing::assert_rotation;
     use approx::assert_abs_diff_eq;
     use raylab::math::consts::{FRAC_PI_2, PI};
+    use raylab_testing::ulp;
 
     /// sin(π/2) and cos(π/2) of the rounded π/2 are off by ≤ ε/2 (cos(π/2)
     /// in f32 is −4.4e-8); a product and a sum add a few ε more, so 4ε bounds

@@ -14,8 +14,6 @@ mod plane;
 #[cfg(test)]
 mod scenes;
 mod sphere;
-#[cfg(test)]
-mod testing;
 
 pub use group::{Group, closest_hit, hit_shape, hit_sphere_or_plane};
 pub use images::{depth_image, id_color, normal_image, object_id_image};

@@ -34,12 +34,9 @@ pub fn hit_plane(ray: &Ray, normal: Vec3, offset: Float, range: Interval) -> Opt
 #[cfg(test)]
 mod tests {
     use super::*;
+    use raylab_testing::v;
 
     const EPS: Float = Float::EPSILON;
-
-    fn v(x: Float, y: Float, z: Float) -> Vec3 {
-        Vec3::new(x, y, z)
-    }
 
     #[test]
     fn hit_from_the_front_keeps_the_normal() {

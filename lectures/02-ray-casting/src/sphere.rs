@@ -145,8 +145,9 @@ pub fn hit_sphere_stable(ray: &Ray, center: Vec3, radius: Float, range: Interval
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::testing::{sphere_roots_reference, to_f64, ulp};
     use raylab::random::Rng;
+    use raylab_testing::roots::{sphere_roots_reference, ulp_wide};
+    use raylab_testing::{v, wide};
 
     type HitSphere = fn(&Ray, Vec3, Float, Interval) -> Option<Hit>;
 
@@ -157,10 +158,6 @@ mod tests {
     ];
 
     const EPS: Float = Float::EPSILON;
-
-    fn v(x: Float, y: Float, z: Float) -> Vec3 {
-        Vec3::new(x, y, z)
-    }
 
     /// The hit is finite, its normal unit and facing against the ray.
     fn assert_well_formed(hit: &Hit, ray: &Ray, what: &str) {
@@ -324,9 +321,9 @@ mod tests {
                     let far_range = Interval::new(near.t, Float::INFINITY);
                     let far = hit_sphere(&inside, center, r, far_range).expect(&what);
                     let factor = if name == "stable" { 16.0 } else { 2000.0 };
-                    let tolerance = to_f64(factor * EPS * r);
-                    assert!((to_f64(near.t) - t0).abs() <= tolerance, "{what}: near {} vs {t0}", near.t);
-                    assert!((to_f64(far.t) - t1).abs() <= tolerance, "{what}: far {} vs {t1}", far.t);
+                    let tolerance = wide(factor * EPS * r);
+                    assert!((wide(near.t) - t0).abs() <= tolerance, "{what}: near {} vs {t0}", near.t);
+                    assert!((wide(far.t) - t1).abs() <= tolerance, "{what}: far {} vs {t1}", far.t);
                     assert!(near.front_face && !far.front_face, "{what}: enters, then leaves");
                 }
             }
@@ -345,7 +342,7 @@ mod tests {
         // to one, off by ~10³ε·r), so for them we only ask for a well-formed hit or a miss.
         let mut rng = Rng::new(0x9_1a2e);
         let mut worst = 0.0f64;
-        for delta in [1e-3, 1e-4, 1024.0 * to_f64(EPS)] {
+        for delta in [1e-3, 1e-4, 1024.0 * wide(EPS)] {
             for _ in 0..200 {
                 let r = rng.range(0.1, 10.0);
                 let center = rng.in_ball(10.0);
@@ -355,13 +352,13 @@ mod tests {
                 let ray = Ray::new(origin, dir);
                 let (t0, t1) =
                     sphere_roots_reference(origin, dir, center, r).expect("passes inside by ≈ δ·r");
-                let t_hc = (t1 - t0) / 2.0 * to_f64(dir.length());
-                let tolerance = to_f64(EPS * r) * (1.0 + to_f64(r) / t_hc);
+                let t_hc = (t1 - t0) / 2.0 * wide(dir.length());
+                let tolerance = wide(EPS * r) * (1.0 + wide(r) / t_hc);
                 let near = hit_sphere_stable(&ray, center, r, Interval::POSITIVE).expect("near root");
                 let far = hit_sphere_stable(&ray, center, r, Interval::new(near.t, Float::INFINITY));
                 let far = far.expect("far root");
                 for (t, reference) in [(near.t, t0), (far.t, t1)] {
-                    let error = (to_f64(t) - reference).abs() * to_f64(dir.length()) / tolerance;
+                    let error = (wide(t) - reference).abs() * wide(dir.length()) / tolerance;
                     worst = worst.max(error);
                     assert!(error <= 16.0, "δ = {delta}: t = {t} vs {reference} ({error})");
                 }
@@ -396,7 +393,7 @@ mod tests {
                 let (t0, _) = sphere_roots_reference(origin, dir, center, 1.0).expect("aimed at the sphere");
                 for (i, (_, hit_sphere)) in ROUTINES.iter().enumerate() {
                     match hit_sphere(&Ray::new(origin, dir), center, 1.0, Interval::POSITIVE) {
-                        Some(hit) => worst[i] = f64::max(worst[i], (to_f64(hit.t) - t0).abs() / ulp(t0)),
+                        Some(hit) => worst[i] = f64::max(worst[i], (wide(hit.t) - t0).abs() / ulp_wide(t0)),
                         None => misses[i] += 1,
                     }
                 }
@@ -486,12 +483,12 @@ mod tests {
             let ray = Ray::new(origin, dir);
             let stable = hit_sphere_stable(&ray, center, r, Interval::POSITIVE);
             hits += stable.is_some() as usize;
-            let scale = to_f64(f.length() + r);
+            let scale = wide(f.length() + r);
             for (name, hit_sphere) in &ROUTINES[..2] {
                 let other = hit_sphere(&ray, center, r, Interval::POSITIVE);
                 assert_eq!(other.is_some(), stable.is_some(), "{name} vs stable: {ray:?}");
                 if let (Some(a), Some(b)) = (other, stable) {
-                    let error = to_f64(((a.t - b.t) * dir.length()).abs()) / (to_f64(EPS) * scale);
+                    let error = wide(((a.t - b.t) * dir.length()).abs()) / (wide(EPS) * scale);
                     worst = worst.max(error);
                     assert!(error <= 128.0, "{name} vs stable: {} vs {} ({error} ε·scale)", a.t, b.t);
                     assert_eq!(a.front_face, b.front_face, "{name} vs stable: {ray:?}");

@@ -18,8 +18,6 @@ mod polygon;
 #[cfg(test)]
 mod scenes;
 mod slabs;
-#[cfg(test)]
-mod testing;
 mod triangle;
 
 pub use mesh::hit_mesh;

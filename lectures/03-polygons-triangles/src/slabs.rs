@@ -140,14 +140,12 @@ mod tests {
     use super::*;
     use approx::assert_relative_eq;
     use raylab::random::Rng;
+    use raylab_testing::exact::exact_hits;
+    use raylab_testing::ray;
 
     /// The cube [−1, 1]³.
     const LO: Vec3 = Vec3::splat(-1.0);
     const HI: Vec3 = Vec3::splat(1.0);
-
-    fn ray(o: [Float; 3], d: [Float; 3]) -> Ray {
-        Ray::new(Vec3::from_array(o), Vec3::from_array(d))
-    }
 
     /// The widened exit t·(1 + 2γ₃) may exceed the exact exit by 2γ₃ relative,
     /// plus one rounding of the product: 4ε covers both.
@@ -281,48 +279,6 @@ mod tests {
                 assert_relative_eq!(hit.t, 1.0, max_relative = 2.0 * Float::EPSILON);
             }
         }
-    }
-
-    /// An exact rational t = num/den, den > 0.
-    #[derive(Clone, Copy)]
-    struct Ratio(i64, i64);
-
-    impl Ratio {
-        fn le(self, o: Ratio) -> bool {
-            self.0 * o.1 <= o.0 * self.1
-        }
-    }
-
-    /// Exact reference on integer coordinates: does o + t·d meet the closed
-    /// box [lo, hi] for some t > 0? Each slab's span is a pair of fractions,
-    /// compared by cross-multiplication (no rounding: |values| < 2³³).
-    fn exact_hits(o: [i64; 3], d: [i64; 3], lo: [i64; 3], hi: [i64; 3]) -> bool {
-        let mut enter: Option<Ratio> = None; // None = −∞
-        let mut exit: Option<Ratio> = None; // None = +∞
-        for i in 0..3 {
-            if d[i] == 0 {
-                if o[i] < lo[i] || o[i] > hi[i] {
-                    return false;
-                }
-                continue;
-            }
-            let (near, far) = if d[i] > 0 {
-                (Ratio(lo[i] - o[i], d[i]), Ratio(hi[i] - o[i], d[i]))
-            } else {
-                (Ratio(o[i] - hi[i], -d[i]), Ratio(o[i] - lo[i], -d[i]))
-            };
-            if enter.is_none_or(|e| e.le(near)) {
-                enter = Some(near);
-            }
-            if exit.is_none_or(|x| far.le(x)) {
-                exit = Some(far);
-            }
-        }
-        let ordered = match (enter, exit) {
-            (Some(e), Some(x)) => e.le(x),
-            _ => true,
-        };
-        ordered && exit.is_none_or(|x| x.0 > 0)
     }
 
     #[test]

@@ -243,10 +243,11 @@ pub fn hit_triangle(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::testing::{to_f64, wide};
     use approx::{assert_abs_diff_eq, assert_relative_eq};
     use raylab::random::Rng;
     use raylab::scene::Mesh;
+    use raylab_testing::meshes::{edge_and_vertex_rays, wobbly_octahedron};
+    use raylab_testing::{wide, wide3};
 
     type Method = fn(&Ray, Vec3, Vec3, Vec3, Interval) -> Option<TriangleHit>;
 
@@ -352,7 +353,7 @@ mod tests {
     /// areas. Returns (t, β, γ) and the smallest of the three barycentrics
     /// (the distance from the nearest edge, in barycentric units).
     fn reference(r: &Ray, a: Vec3, b: Vec3, c: Vec3) -> Option<(f64, f64, f64, f64)> {
-        let (o, d, a, b, c) = (wide(r.origin), wide(r.dir), wide(a), wide(b), wide(c));
+        let (o, d, a, b, c) = (wide3(r.origin), wide3(r.dir), wide3(a), wide3(b), wide3(c));
         let sub = |u: [f64; 3], v: [f64; 3]| [u[0] - v[0], u[1] - v[1], u[2] - v[2]];
         let dot = |u: [f64; 3], v: [f64; 3]| u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
         let cross = |u: [f64; 3], v: [f64; 3]| {
@@ -380,7 +381,7 @@ mod tests {
         // below ~100 when the ray is not grazing (|cos| ≥ 0.1, checked) and the
         // triangle is not a sliver (area ≥ 0.05): 10⁴ε. Classification may
         // differ only within that distance of an edge.
-        let tol = 1e4 * to_f64(Float::EPSILON);
+        let tol = 1e4 * wide(Float::EPSILON);
         let mut rng = Rng::new(11);
         let (mut tested, mut hits) = (0, 0);
         while tested < 5000 {
@@ -403,7 +404,7 @@ mod tests {
                     assert_eq!(found.is_some(), exact_hit, "{name}: margin {margin}, {r:?} {a} {b} {c}");
                 }
                 if let Some(h) = found {
-                    let close = |x: Float, y: f64| (to_f64(x) - y).abs() <= tol * (1.0 + y.abs());
+                    let close = |x: Float, y: f64| (wide(x) - y).abs() <= tol * (1.0 + y.abs());
                     assert!(
                         close(h.t, t) && close(h.beta, beta) && close(h.gamma, gamma),
                         "{name}: {h:?} vs {t} {beta} {gamma}"
@@ -412,41 +413,6 @@ mod tests {
             }
         }
         assert!(hits > 1000, "only {hits} hits: the test would prove little");
-    }
-
-    /// The octahedron |x| + |y| + |z| = 1 with its vertices moved a little at
-    /// random (so the edges do not lie on nice coordinates): 6 vertices, 8
-    /// faces wound counter-clockwise from outside, every edge shared by two.
-    fn wobbly_octahedron(rng: &mut Rng) -> Mesh {
-        let axes = [Vec3::X, -Vec3::X, Vec3::Y, -Vec3::Y, Vec3::Z, -Vec3::Z];
-        let positions = axes.iter().map(|&v| v * rng.range(0.8, 1.2) + rng.in_cube(0.1)).collect();
-        let mut triangles = Vec::new();
-        for (sx, sy, sz) in
-            [(0, 2, 4), (1, 2, 4), (0, 3, 4), (1, 3, 4), (0, 2, 5), (1, 2, 5), (0, 3, 5), (1, 3, 5)]
-        {
-            // (x̂, ŷ, ẑ) is counter-clockwise from (1, 1, 1); each sign flip reverses it.
-            let flips = (sx % 2) + (sy % 2) + (sz % 2);
-            triangles.push(if flips % 2 == 0 { [sx, sy, sz] } else { [sx, sz, sy] });
-        }
-        Mesh { positions, triangles, ..Mesh::default() }
-    }
-
-    /// The rays that test a closed mesh for leaks: from `origin` (inside) toward
-    /// every vertex and toward points of every edge (its midpoint and two more).
-    fn edge_and_vertex_rays(mesh: &Mesh, origin: Vec3) -> Vec<Ray> {
-        let mut rays: Vec<Ray> = mesh.positions.iter().map(|&p| Ray::new(origin, p - origin)).collect();
-        for tri in &mesh.triangles {
-            for k in 0..3 {
-                let (i, j) = (tri[k], tri[(k + 1) % 3]);
-                if i < j {
-                    let (p, q) = (mesh.positions[i as usize], mesh.positions[j as usize]);
-                    for s in [0.5, 0.1, 0.7] {
-                        rays.push(Ray::new(origin, p.lerp(q, s) - origin));
-                    }
-                }
-            }
-        }
-        rays
     }
 
     /// How many `rays` find no triangle of `mesh` with `method`.

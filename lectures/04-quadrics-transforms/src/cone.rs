@@ -102,10 +102,7 @@ mod tests {
     use approx::{assert_abs_diff_eq, assert_relative_eq};
     use raylab::math::consts::TAU;
     use raylab::random::Rng;
-
-    fn ray(o: [Float; 3], d: [Float; 3]) -> Ray {
-        Ray::new(Vec3::from_array(o), Vec3::from_array(d))
-    }
+    use raylab_testing::ray;
 
     fn hit(o: [Float; 3], d: [Float; 3]) -> Option<Hit> {
         hit_cone(&ray(o, d), Interval::POSITIVE)

@@ -127,11 +127,8 @@ mod tests {
     use raylab::scene::Object;
     use raylab::stats::measure;
     use raylab::{Hit, Vec3};
+    use raylab_testing::v;
     use std::sync::atomic::{AtomicUsize, Ordering};
-
-    fn v(x: Float, y: Float, z: Float) -> Vec3 {
-        Vec3::new(x, y, z)
-    }
 
     /// A point light at `position` seen from `from` (white, undimmed).
     fn point_light(from: Vec3, position: Vec3) -> LightSample {

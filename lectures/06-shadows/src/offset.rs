@@ -138,6 +138,7 @@ mod tests {
     use raylab::random::Rng;
     use raylab::scene::Shape;
     use raylab::{Hit, Intersector, Interval, Ray, WHITE};
+    use raylab_testing::v;
 
     type Offset = fn(Vec3, Vec3, Vec3, Vec3) -> Vec3;
 
@@ -149,10 +150,6 @@ mod tests {
 
     const EPS: Float = Float::EPSILON;
     const F32: bool = size_of::<Float>() == 4;
-
-    fn v(x: Float, y: Float, z: Float) -> Vec3 {
-        Vec3::new(x, y, z)
-    }
 
     /// The offset before the ray's origin was taken into account: 16ε·|p|₁ + floor (16 =
     /// 12.5ε rounded up, the bound for a ray that starts no farther out than p). Kept to

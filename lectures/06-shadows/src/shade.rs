@@ -137,13 +137,10 @@ mod tests {
     use raylab::scene::{Attenuation, LightKind, Object, Specular};
     use raylab::stats::{Counter, measure};
     use raylab::{Float, Ray, radians};
+    use raylab_testing::v;
 
     const EPS: Float = Float::EPSILON;
     const AMBIENT: Color = Color::splat(0.1);
-
-    fn v(x: Float, y: Float, z: Float) -> Vec3 {
-        Vec3::new(x, y, z)
-    }
 
     /// The default settings with blockers treated by `mode`.
     fn settings(mode: ShadowMode) -> ShadowSettings {

@@ -136,13 +136,10 @@ mod tests {
     use raylab::scene::{Attenuation, LightKind, Object, Shape};
     use raylab::stats::{Counter, measure};
     use raylab::{Hit, Ray, WHITE};
+    use raylab_testing::v;
 
     const EPS: Float = Float::EPSILON;
     const AMBIENT: Color = Color::splat(0.1);
-
-    fn v(x: Float, y: Float, z: Float) -> Vec3 {
-        Vec3::new(x, y, z)
-    }
 
     /// A white light of this kind, casting shadows.
     fn white(kind: LightKind) -> Light {

@@ -97,14 +97,9 @@ pub fn fresnel_dielectric(cos_i: Float, eta_i: Float, eta_t: Float) -> Float {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use raylab_testing::wide;
 
     const EPS: Float = Float::EPSILON;
-
-    /// A `Float` in f64, for checks computed in double precision.
-    #[allow(clippy::unnecessary_cast)] // Float is f64 under the f64 feature
-    fn wide(x: Float) -> f64 {
-        x as f64
-    }
 
     /// cos of an angle given in degrees, computed in f64 and rounded once.
     fn cos_deg(degrees: f64) -> Float {

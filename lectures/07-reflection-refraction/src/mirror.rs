@@ -27,12 +27,9 @@ pub fn mirror_direction(dir: Vec3, n: Vec3) -> Vec3 {
 mod tests {
     use super::*;
     use raylab::Float;
+    use raylab_testing::v;
 
     const EPS: Float = Float::EPSILON;
-
-    fn v(x: Float, y: Float, z: Float) -> Vec3 {
-        Vec3::new(x, y, z)
-    }
 
     #[test]
     fn angle_of_reflection_equals_angle_of_incidence() {

@@ -102,29 +102,15 @@ pub fn refract(i: Vec3, n: Vec3, eta_ratio: Float) -> Option<Vec3> {
 mod tests {
     use super::*;
     use raylab::Ray;
+    use raylab_testing::{v, wide, wide3};
 
     const EPS: Float = Float::EPSILON;
-
-    fn v(x: Float, y: Float, z: Float) -> Vec3 {
-        Vec3::new(x, y, z)
-    }
 
     /// The unit direction that meets the surface y = 0 (normal +y) at `degrees`
     /// from the normal, travelling in +x and down; built in f64 and rounded once.
     fn incoming(degrees: f64) -> Vec3 {
         let theta = degrees.to_radians();
         v(theta.sin() as Float, -theta.cos() as Float, 0.0)
-    }
-
-    /// A `Float` in f64, for checks computed in double precision.
-    #[allow(clippy::unnecessary_cast)] // Float is f64 under the f64 feature
-    fn wide(x: Float) -> f64 {
-        x as f64
-    }
-
-    /// The components in f64.
-    fn wide3(a: Vec3) -> [f64; 3] {
-        [wide(a.x), wide(a.y), wide(a.z)]
     }
 
     /// The angle between two directions, in degrees, computed in f64.

@@ -193,6 +193,7 @@ mod tests {
     use raylab::scene::{Attenuation, Light, LightKind, Material, Specular};
     use raylab::stats::RayStats;
     use raylab::{Intersector, WHITE};
+    use raylab_testing::scenes::{block_with_tile, facing_mirrors};
 
     const BACKGROUND: Color = Color::new(0.2, 0.3, 0.4);
     const AMBIENT: Color = Color::new(0.1, 0.2, 0.3);
@@ -394,24 +395,6 @@ mod tests {
         }
     }
 
-    /// A glass block (y from −1 to 0, η = 1.5, k_t = 1, no mirror of its own) holding a
-    /// green matte tile (y from −1 to −0.8, x from 1.5 to 3), no lights, ambient ½, and
-    /// a ray from (0, −0.5, 0) inside the glass going up at `degrees` from the vertical.
-    fn block_with_tile(degrees: Float) -> (raylab::Scene, Ray) {
-        let s = scene(
-            vec![
-                cuboid(v(-5.0, -1.0, -5.0), v(5.0, 0.0, 5.0), 0),
-                cuboid(v(1.5, -1.0, -1.0), v(3.0, -0.8, 1.0), 1),
-            ],
-            vec![glass(1.5), matte(v(0.2, 0.6, 0.4))],
-            vec![],
-            v(1.0, 0.0, 1.0),
-            Color::splat(0.5),
-        );
-        let a = raylab::radians(degrees);
-        (s, Ray::new(v(0.0, -0.5, 0.0), v(a.sin(), a.cos(), 0.0)))
-    }
-
     #[test]
     fn total_internal_reflection_sends_the_transmitted_weight_to_the_mirror_ray() {
         // At 60° from the top face's normal, above θ_c = arcsin(1/1.5) = 41.8°: no
@@ -461,20 +444,6 @@ mod tests {
         let (fresnel, stats) = trace_counted(&s, &ray, &TraceSettings { fresnel: true, ..settings });
         assert_abs_diff_eq!(fresnel, 0.04 * background + 0.96 * tile, epsilon = 8.0 * EPS);
         assert_eq!(secondary(&stats), (1, 1, 0));
-    }
-
-    /// Two parallel mirrors x = ±1 (k_d = 0.1, k_r = `kr`), no lights, white ambient light,
-    /// and the ray from the origin along +x: it bounces between them at normal incidence.
-    fn facing_mirrors(kr: Float) -> (raylab::Scene, Ray) {
-        let material = Material { diffuse: Color::splat(0.1), reflective: Color::splat(kr), ..mirror(kr) };
-        let s = scene(
-            vec![plane(Vec3::X, 1.0, 0), plane(Vec3::X, -1.0, 0)],
-            vec![material],
-            vec![],
-            BACKGROUND,
-            WHITE,
-        );
-        (s, Ray::new(Vec3::ZERO, Vec3::X))
     }
 
     #[test]

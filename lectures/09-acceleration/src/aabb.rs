@@ -177,12 +177,9 @@ mod tests {
     use super::*;
     use crate::testing::Rng;
     use l03_polygons_triangles::hit_slabs;
+    use raylab_testing::ray;
 
     const EPS: Float = Float::EPSILON;
-
-    fn ray(o: [Float; 3], d: [Float; 3]) -> Ray {
-        Ray::new(Vec3::from_array(o), Vec3::from_array(d))
-    }
 
     fn cube() -> Aabb {
         Aabb::new(Vec3::splat(-1.0), Vec3::ONE)

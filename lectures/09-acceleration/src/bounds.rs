@@ -103,8 +103,9 @@ pub fn object_bounds(object: &Object) -> Aabb {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::testing::{Rng, d3, mat_f64, to_f64};
+    use crate::testing::{Rng, d3, mat_f64};
     use raylab::scene::{Mesh, Transform};
+    use raylab_testing::wide;
     use std::sync::Arc;
 
     fn placed(shape: Shape, world_from_object: Option<Mat4>) -> Object {
@@ -178,7 +179,7 @@ mod tests {
             .map(|_| match shape {
                 Shape::Sphere { center, radius } => {
                     let (c, u) = (d3(*center), rng.unit_f64());
-                    std::array::from_fn(|i| c[i] + to_f64(*radius) * u[i])
+                    std::array::from_fn(|i| c[i] + wide(*radius) * u[i])
                 }
                 Shape::Box { min, max } => {
                     // A random point on a random face: one coordinate at its min or max.
@@ -226,7 +227,7 @@ mod tests {
                     let t = rng.unit_f64();
                     let tangent =
                         [n[1] * t[2] - n[2] * t[1], n[2] * t[0] - n[0] * t[2], n[0] * t[1] - n[1] * t[0]];
-                    std::array::from_fn(|i| to_f64(*offset) * n[i] + 1e6 * tangent[i])
+                    std::array::from_fn(|i| wide(*offset) * n[i] + 1e6 * tangent[i])
                 }
             })
             .collect()
@@ -238,7 +239,7 @@ mod tests {
     /// surface).
     fn holds(b: &Aabb, p: [f64; 3], scale: f64) -> bool {
         let slack = 8.0 * f64::EPSILON * scale;
-        (0..3).all(|i| to_f64(b.min[i]) - slack <= p[i] && p[i] <= to_f64(b.max[i]) + slack)
+        (0..3).all(|i| wide(b.min[i]) - slack <= p[i] && p[i] <= wide(b.max[i]) + slack)
     }
 
     #[test]

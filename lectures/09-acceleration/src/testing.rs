@@ -63,15 +63,7 @@ impl Rng {
     }
 }
 
-/// A `Float` widened to f64 without rounding.
-pub fn to_f64(x: Float) -> f64 {
-    x as f64
-}
-
-/// A vector as f64 numbers (exact).
-pub fn d3(v: Vec3) -> [f64; 3] {
-    [v.x as f64, v.y as f64, v.z as f64]
-}
+pub use raylab_testing::wide3 as d3;
 
 /// The first three rows of an affine matrix as f64 numbers (exact).
 pub fn mat_f64(m: &Mat4) -> [[f64; 4]; 3] {
@@ -85,9 +77,7 @@ pub fn object(shape: Shape, material: usize, world_from_object: Option<Mat4>) ->
     Object { shape, material, transform: world_from_object.map(|m| Transform::new(m).unwrap()) }
 }
 
-pub fn sphere(center: Vec3, radius: Float, material: usize) -> Object {
-    object(Shape::Sphere { center, radius }, material, None)
-}
+pub use raylab_testing::scenes::sphere;
 
 /// A random scene of every kind of shape the brief names: 60 spheres, 20
 /// boxes (one in four flat), 30 triangles (some with vertex normals), a

@@ -18,7 +18,7 @@ pub(super) use crate::check::{
     CheckResult, Failure, close, close3, ensure, fail, maybe, near3, num, ray, show_hit, show_ray, show_span,
     vec3,
 };
-pub(super) use crate::exact::exact_hits;
+pub(super) use raylab_testing::exact::exact_hits;
 
 pub(super) type SlabsFn = fn(&Ray, Vec3, Vec3, Interval) -> Option<(Float, Float)>;
 pub(super) type BoxFn = fn(&Ray, Vec3, Vec3, Interval) -> Option<Hit>;

@@ -5,6 +5,7 @@
 #![allow(clippy::unnecessary_cast)] // widening Float to f64 for references is the identity in an f64 build
 
 use super::common::*;
+use raylab_testing::meshes::{edge_and_vertex_rays, wobbly_octahedron};
 
 // ---- triangles -------------------------------------------------------------
 
@@ -189,21 +190,6 @@ pub(super) fn edge_cases(edge: EdgeFn) -> CheckResult {
     Ok("a hand value, 200 antisymmetric pairs, a rounding tie".into())
 }
 
-/// The octahedron |x| + |y| + |z| = 1 with its vertices moved a little at
-/// random: 8 faces wound counter-clockwise from outside, every edge shared.
-pub(super) fn wobbly_octahedron(rng: &mut Rng) -> Mesh {
-    let axes = [Vec3::X, -Vec3::X, Vec3::Y, -Vec3::Y, Vec3::Z, -Vec3::Z];
-    let positions = axes.iter().map(|&v| v * rng.range(0.8, 1.2) + rng.in_cube(0.1)).collect();
-    let mut triangles = Vec::new();
-    for (sx, sy, sz) in
-        [(0, 2, 4), (1, 2, 4), (0, 3, 4), (1, 3, 4), (0, 2, 5), (1, 2, 5), (0, 3, 5), (1, 3, 5)]
-    {
-        let flips = (sx % 2) + (sy % 2) + (sz % 2);
-        triangles.push(if flips % 2 == 0 { [sx, sy, sz] } else { [sx, sz, sy] });
-    }
-    Mesh { positions, triangles, ..Mesh::default() }
-}
-
 /// Closed meshes with an origin inside, and the rays from it aimed exactly
 /// at every vertex and at three points of every edge.
 pub(super) fn leak_tests() -> Vec<(Mesh, Vec<Ray>)> {
@@ -215,18 +201,7 @@ pub(super) fn leak_tests() -> Vec<(Mesh, Vec<Ray>)> {
     meshes
         .into_iter()
         .map(|(mesh, origin)| {
-            let mut rays: Vec<Ray> = mesh.positions.iter().map(|&p| Ray::new(origin, p - origin)).collect();
-            for tri in &mesh.triangles {
-                for k in 0..3 {
-                    let (i, j) = (tri[k], tri[(k + 1) % 3]);
-                    if i < j {
-                        let (p, q) = (mesh.positions[i as usize], mesh.positions[j as usize]);
-                        for s in [0.5, 0.1, 0.7] {
-                            rays.push(Ray::new(origin, p.lerp(q, s) - origin));
-                        }
-                    }
-                }
-            }
+            let rays = edge_and_vertex_rays(&mesh, origin);
             (mesh, rays)
         })
         .collect()

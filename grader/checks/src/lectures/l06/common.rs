@@ -28,11 +28,7 @@ pub(super) type AreaFn = fn(&dyn Intersector, &[Material], &Surface, &Light, Sha
 
 pub(super) const EPS: Float = Float::EPSILON;
 
-/// The gap from |x| to the next float up.
-pub(super) fn ulp(x: Float) -> Float {
-    let x = x.abs();
-    x.next_up() - x
-}
+pub(super) use raylab_testing::ulp;
 
 // ------------------------------------------------------- the check's scene
 

@@ -5,9 +5,7 @@
 
 use super::common::*;
 
-pub(super) fn sphere(center: Vec3, radius: Float, material: usize) -> Object {
-    Object { shape: Shape::Sphere { center, radius }, material, transform: None }
-}
+pub(super) use raylab_testing::scenes::sphere;
 
 /// 60 random spheres in [−6, 6]³, the floor y = −7 (unbounded) and an icosphere mesh (whose
 /// 320 triangles are single primitives), fixed by the seed.

@@ -14,7 +14,6 @@ pub(super) use l10_textures_sampling::{
 };
 pub(super) use raylab::math::consts::{PI, TAU};
 pub(super) use raylab::random::Rng;
-pub(super) use raylab::scene::{self, Light, LightKind, Material, Object, Shape};
 pub(super) use raylab::stats::{Counter, RayStats};
 pub(super) use raylab::{Color, Float, Image, Scene, Vec2, Vec3};
 

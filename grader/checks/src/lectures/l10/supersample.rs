@@ -5,59 +5,14 @@
 
 use super::common::*;
 
-pub(super) fn scene_of(
-    camera: scene::Camera,
-    size: (u32, u32),
-    objects: Vec<Object>,
-    lights: Vec<Light>,
-) -> Scene {
-    Scene {
-        camera,
-        width: size.0,
-        height: size.1,
-        background: Color::ZERO,
-        ambient: Color::ONE,
-        lights,
-        materials: vec![Material { diffuse: Color::ONE, ..Material::default() }],
-        objects,
-        render: Default::default(),
-    }
-}
-
-/// The white half-plane y < slope·x + intercept (z = 0) on black, seen by an orthographic
-/// camera from +z with a view 2 units high: the image is the square [−1, 1]², a 1 × 1 image
-/// one pixel of 2 × 2 units. No lights, white ambient: a sample is 1 on the half-plane and 0
-/// off it. The half-plane is a triangle reaching 100 units along the edge and 1000 below,
-/// covering everything below the edge in [−2, 2]² (the tent's reach).
+/// The white half-plane y < slope·x + intercept in a 1 × 1 image: one pixel of 2 × 2 units.
 pub(super) fn half_plane(slope: Float, intercept: Float) -> Scene {
-    let edge = |x: Float| v3(x, slope * x + intercept, 0.0);
-    let triangle =
-        Shape::Triangle { vertices: [edge(-100.0), edge(100.0), v3(0.0, -1000.0, 0.0)], normals: None };
-    let camera =
-        scene::Camera::Orthographic { eye: v3(0.0, 0.0, 5.0), at: Vec3::ZERO, up: Vec3::Y, height: 2.0 };
-    scene_of(camera, (1, 1), vec![Object { shape: triangle, material: 0, transform: None }], vec![])
+    raylab_testing::scenes::half_plane(slope, intercept, 1)
 }
 
 /// Two lit spheres over a floor, 12 × 8, seen in perspective.
 pub(super) fn spheres() -> Scene {
-    let sphere = |x: Float, r: Float| Object {
-        shape: Shape::Sphere { center: v3(x, 0.0, 0.0), radius: r },
-        material: 0,
-        transform: None,
-    };
-    let floor =
-        Object { shape: Shape::Plane { normal: Vec3::Y, offset: -1.0 }, material: 0, transform: None };
-    let light = Light {
-        color: Color::splat(0.8),
-        shadows: true,
-        kind: LightKind::Directional { direction: v3(-1.0, -2.0, -1.0).normalize() },
-    };
-    let camera =
-        scene::Camera::Perspective { eye: v3(0.0, 1.0, 6.0), at: Vec3::ZERO, up: Vec3::Y, fovy: 0.7 };
-    let mut s = scene_of(camera, (12, 8), vec![sphere(-1.0, 0.9), sphere(1.2, 0.6), floor], vec![light]);
-    s.ambient = Color::splat(0.1);
-    s.background = Color::new(0.2, 0.3, 0.5);
-    s
+    raylab_testing::scenes::two_spheres(12, 8)
 }
 
 /// `render` of `s` at its own size through its own camera, brute force, default settings.

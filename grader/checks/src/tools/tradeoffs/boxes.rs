@@ -9,7 +9,7 @@ use raylab::{Float, Interval, Ray, Vec3};
 
 use super::row::{Pair, Row, own_precision};
 use super::timing::{Effort, time_per_item};
-pub use crate::exact::exact_hits;
+pub use raylab_testing::exact::exact_hits;
 
 /// The catalogued naive box test: each of the six face planes in turn, the
 /// plane's t = (plane − oᵢ)/dᵢ, the point o + t·d, and whether that point lies

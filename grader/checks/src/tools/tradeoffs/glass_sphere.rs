@@ -10,9 +10,10 @@ use raylab::random::Rng;
 use raylab::{Float, Hit, Interval, Ray, Vec3};
 
 use super::offsets::VARIANTS;
-use super::reference::{dot, to_f64, unit, wide};
+use super::reference::{dot, unit};
 use super::row::{Pair, Row, own_precision};
 use super::timing::{Effort, time_per_item};
+use raylab_testing::{wide, wide3};
 
 /// The sphere's radius.
 pub const RADIUS: Float = 1e-5;
@@ -44,7 +45,7 @@ struct Entry {
 /// end of the chord, whose length is −2(t·n)·r for the unit refracted t and
 /// the outward unit n at the entry.
 pub fn exit_f64(eye: Vec3, d: Vec3) -> Option<[f64; 3]> {
-    let (o, d, r, eta) = (wide(eye), unit(wide(d)), to_f64(RADIUS), 1.0 / to_f64(IOR));
+    let (o, d, r, eta) = (wide3(eye), unit(wide3(d)), wide(RADIUS), 1.0 / wide(IOR));
     let t_ca = -dot(o, d);
     let closest = [0, 1, 2].map(|k| o[k] + t_ca * d[k]);
     let h2 = r * r - dot(closest, closest);
@@ -95,9 +96,9 @@ fn exit(entry: &Entry, origin: Vec3) -> Option<Hit> {
 /// The distance of the exit found from the truth, in radii (∞ for none).
 fn exit_error(entry: &Entry, found: Option<Hit>) -> f64 {
     found.map_or(f64::INFINITY, |h| {
-        let p = wide(h.point);
+        let p = wide3(h.point);
         let d = [0, 1, 2].map(|k| p[k] - entry.exit[k]);
-        dot(d, d).sqrt() / to_f64(RADIUS)
+        dot(d, d).sqrt() / wide(RADIUS)
     })
 }
 
@@ -160,7 +161,7 @@ mod tests {
         // the diameter and the exit is (0, 0, −r), to f64 rounding at the eye's distance 1
         // (the entry 1 − (1 − r) carries a few 10⁻¹⁶): tolerance 10⁻¹⁵, 10⁻¹⁰ r.
         let exit = exit_f64(Vec3::Z, -Vec3::Z).unwrap();
-        let r = to_f64(RADIUS);
+        let r = wide(RADIUS);
         assert!(exit[0] == 0.0 && exit[1] == 0.0 && (exit[2] + r).abs() < 1e-15, "{exit:?}");
         // A line 1.5 r from the centre misses.
         assert_eq!(exit_f64(Vec3::new(1.5 * RADIUS, 0.0, 1.0), -Vec3::Z), None);

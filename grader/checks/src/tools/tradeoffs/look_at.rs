@@ -8,9 +8,10 @@ use l01_transforms::{CameraError, look_at};
 use raylab::random::Rng;
 use raylab::{Float, Mat4, Vec3};
 
-use super::reference::{to_f64, unit, wide};
+use super::reference::unit;
 use super::row::{Pair, Row, own_precision};
 use super::timing::{Effort, time_per_item};
+use raylab_testing::{wide, wide3};
 
 /// The catalogued naive look-at: w = (eye − at)/|eye − at|, u = (up × w)/|up × w|,
 /// v = w × u, and the matrix with columns u, v, w, eye; no test that up is
@@ -108,8 +109,8 @@ fn near_minus_z_cameras(count: usize, seed: u64) -> Vec<Camera> {
 /// `Float` columns; NaN for a basis with a NaN.
 pub fn orthonormality_error(m: &Mat4, eye: Vec3, at: Vec3) -> f64 {
     use super::reference::{cross, dot};
-    let [u, v, w] = [m.x_axis, m.y_axis, m.z_axis].map(|c| wide(c.truncate()));
-    let w_true = unit([0, 1, 2].map(|k| to_f64(eye[k]) - to_f64(at[k])));
+    let [u, v, w] = [m.x_axis, m.y_axis, m.z_axis].map(|c| wide3(c.truncate()));
+    let w_true = unit([0, 1, 2].map(|k| wide(eye[k]) - wide(at[k])));
     let uv = cross(u, v);
     let mut errors = vec![
         (dot(u, u).sqrt() - 1.0).abs(),

@@ -3,17 +3,8 @@
 //! on a residual evaluated in double-double arithmetic).
 
 use raylab::{Float, Vec3};
-
-/// A `Float` widened to f64 without rounding.
-#[allow(clippy::unnecessary_cast)] // the identity when Float is f64
-pub fn to_f64(x: Float) -> f64 {
-    x as f64
-}
-
-/// A `Float` vector widened to f64 without rounding.
-pub fn wide(v: Vec3) -> [f64; 3] {
-    [to_f64(v.x), to_f64(v.y), to_f64(v.z)]
-}
+use raylab_testing::roots::residual;
+use raylab_testing::{wide, wide3};
 
 /// u·v in f64.
 pub fn dot(u: [f64; 3], v: [f64; 3]) -> f64 {
@@ -59,7 +50,7 @@ pub struct SphereTruth {
 /// arithmetic (error-free products by fused multiply–add), so they are
 /// accurate to about one f64 rounding even where f64 itself cancels.
 pub fn sphere_truth(origin: Vec3, dir: Vec3, center: Vec3, radius: Float) -> SphereTruth {
-    let (o, d, c, r) = (wide(origin), wide(dir), wide(center), to_f64(radius));
+    let (o, d, c, r) = (wide3(origin), wide3(dir), wide3(center), wide(radius));
     let f = [o[0] - c[0], o[1] - c[1], o[2] - c[2]];
     let a = dot(d, d);
     let t_ca = -dot(f, d) / a;
@@ -80,47 +71,6 @@ pub fn sphere_truth(origin: Vec3, dir: Vec3, center: Vec3, radius: Float) -> Sph
         (polish(t_ca - t_hc), polish(t_ca + t_hc))
     });
     SphereTruth { h2, closeness: l2.sqrt() / r, roots }
-}
-
-/// g(t) = |f + t·d|² − r² in double-double arithmetic, and g'(t) = 2 d·(f + t·d).
-fn residual(f: [f64; 3], d: [f64; 3], r: f64, t: f64) -> (f64, f64) {
-    let (rr, rr_err) = two_prod(r, r);
-    let mut sum = (-rr, -rr_err);
-    let mut slope = 0.0;
-    for i in 0..3 {
-        // p = f + t·d as an unevaluated sum hi + lo.
-        let (td, td_err) = two_prod(t, d[i]);
-        let (hi, s_err) = two_sum(f[i], td);
-        let lo = s_err + td_err;
-        // p² ≈ hi² + 2·hi·lo (lo² is below the last bit).
-        let (sq, sq_err) = two_prod(hi, hi);
-        sum = add(sum, (sq, sq_err + 2.0 * hi * lo));
-        slope += 2.0 * d[i] * (hi + lo);
-    }
-    (sum.0 + sum.1, slope)
-}
-
-/// a·b = p + e exactly.
-fn two_prod(a: f64, b: f64) -> (f64, f64) {
-    let p = a * b;
-    (p, a.mul_add(b, -p))
-}
-
-/// a + b = s + e exactly (Knuth).
-fn two_sum(a: f64, b: f64) -> (f64, f64) {
-    let s = a + b;
-    let bb = s - a;
-    (s, (a - (s - bb)) + (b - bb))
-}
-
-fn add(x: (f64, f64), y: (f64, f64)) -> (f64, f64) {
-    let (s, e) = two_sum(x.0, y.0);
-    two_sum(s, e + x.1 + y.1)
-}
-
-/// One ulp of `x` in `Float`, as the lectures count it: |x|·ε.
-pub fn ulp(x: f64) -> f64 {
-    x.abs() * to_f64(Float::EPSILON)
 }
 
 #[cfg(test)]
@@ -154,7 +104,7 @@ mod tests {
         let y = 0.6 as Float;
         let truth = sphere_truth(Vec3::new(0.0, y, 0.0), Vec3::X, Vec3::new(1e8, 0.0, 0.0), 1.0);
         let (t0, t1) = truth.roots.expect("passes 0.6 from the centre");
-        let h = (1.0 - to_f64(y) * to_f64(y)).sqrt();
+        let h = (1.0 - wide(y) * wide(y)).sqrt();
         assert!((t0 - (1e8 - h)).abs() <= 3e-8, "{t0}");
         assert!((t1 - (1e8 + h)).abs() <= 3e-8, "{t1}");
         // And a line 1.5 from the centre misses: h² = 1 − 2.25.

@@ -8,9 +8,10 @@ use l07_reflection_refraction::refract;
 use raylab::random::Rng;
 use raylab::{Float, Vec3};
 
-use super::reference::{angle, dot, to_f64, unit, wide};
+use super::reference::{angle, dot, unit};
 use super::row::{Pair, Row, own_precision};
 use super::timing::{Effort, time_per_item};
+use raylab_testing::{wide, wide3};
 
 type Refract = fn(Vec3, Vec3, Float) -> Option<Vec3>;
 
@@ -81,7 +82,7 @@ struct Case {
 /// normalised in f64): `None` on total internal reflection (sin²θ_t ≥ 1),
 /// else the unit transmitted direction.
 pub fn refract_f64(i: Vec3, n: Vec3, eta: Float) -> Option<[f64; 3]> {
-    let (i, n, eta) = (unit(wide(i)), unit(wide(n)), to_f64(eta));
+    let (i, n, eta) = (unit(wide3(i)), unit(wide3(n)), wide(eta));
     let cos_i = -dot(i, n);
     let sin2_t = eta * eta * (1.0 - cos_i * cos_i);
     if sin2_t >= 1.0 {
@@ -193,7 +194,7 @@ fn judge(refract: Refract, cases: &[Case]) -> Errors {
             errors.wrong_tir += usize::from(got.is_none() != tir);
         }
         if let (Some(t), Some(truth)) = (got, case.t) {
-            let error = angle(wide(t), truth);
+            let error = angle(wide3(t), truth);
             errors.max_angle = if error.is_nan() { f64::NAN } else { errors.max_angle.max(error) };
         }
     }
@@ -265,7 +266,7 @@ mod tests {
         // Normal incidence never reflects; its truth is −n.
         for case in normal_cases(20, 2) {
             assert_eq!(case.tir, Some(false));
-            assert!(angle(case.t.unwrap(), wide(-case.n)) < 1e-12);
+            assert!(angle(case.t.unwrap(), wide3(-case.n)) < 1e-12);
         }
         // Lecture 07 measured 28 (f32) and 32 (f64) rounding-to-1 cases in one orientation.
         let ones = exact_one_cases();

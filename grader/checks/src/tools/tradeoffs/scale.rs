@@ -10,9 +10,10 @@ use raylab::random::Rng;
 use raylab::scene::Transform;
 use raylab::{Hit, Interval, Mat4, Ray, Vec3};
 
-use super::reference::{angle, dot, to_f64, wide};
+use super::reference::{angle, dot};
 use super::row::{Pair, Row, own_precision};
 use super::timing::{Effort, time_per_item};
+use raylab_testing::{wide, wide3};
 
 /// The catalogued naive normal: the object-space normal taken to the world by
 /// M = `world_from_object` itself, as a direction, then normalised.
@@ -137,9 +138,9 @@ fn cross_accurate(u: [f64; 3], v: [f64; 3]) -> [f64; 3] {
 /// cross product to about one f64 rounding.
 pub fn normal_truth(n: Vec3, world_from_object: &Mat4) -> [f64; 3] {
     let a = [world_from_object.x_axis, world_from_object.y_axis, world_from_object.z_axis]
-        .map(|c| wide(c.truncate()));
+        .map(|c| wide3(c.truncate()));
     let cofactor = [cross_accurate(a[1], a[2]), cross_accurate(a[2], a[0]), cross_accurate(a[0], a[1])];
-    let n = wide(n);
+    let n = wide3(n);
     let sign = dot(a[0], cofactor[0]).signum(); // det A: keeps the outward side outward
     [0, 1, 2].map(|k| sign * (0..3).map(|j| cofactor[j][k] * n[j]).sum::<f64>())
 }
@@ -148,7 +149,7 @@ pub fn normal_truth(n: Vec3, world_from_object: &Mat4) -> [f64; 3] {
 /// sphere), S = diag(s), in f64: the object-space ray u = (o − c)/s, v = d/s
 /// (t is shared), then the stable quadratic with discriminant |v|² − |u × v|².
 pub fn t_truth(o: Vec3, d: Vec3, c: Vec3, s: Vec3) -> Option<f64> {
-    let (o, d, c, s) = (wide(o), wide(d), wide(c), wide(s));
+    let (o, d, c, s) = (wide3(o), wide3(d), wide3(c), wide3(s));
     let u = [0, 1, 2].map(|k| (o[k] - c[k]) / s[k]);
     let v = [0, 1, 2].map(|k| d[k] / s[k]);
     let m = super::reference::cross(u, v);
@@ -179,7 +180,7 @@ pub fn measure(effort: &Effort) -> Vec<Row> {
         for (variant, normal) in NORMAL_VARIANTS {
             let worst = normals
                 .iter()
-                .map(|(n, truth)| angle(wide(normal(*n, &transform)), *truth))
+                .map(|(n, truth)| angle(wide3(normal(*n, &transform)), *truth))
                 .fold(0.0, |m: f64, e| if e.is_nan() { f64::NAN } else { m.max(e) });
             let time = time_per_item(effort, normals.len(), || {
                 for (n, _) in &normals {
@@ -216,7 +217,7 @@ pub fn measure(effort: &Effort) -> Vec<Row> {
                 match hit(ray, &transform, Interval::POSITIVE) {
                     None => misses += 1,
                     Some(h) => {
-                        let error = (to_f64(h.t) - truth).abs() / truth;
+                        let error = (wide(h.t) - truth).abs() / truth;
                         worst = if error.is_nan() { f64::NAN } else { worst.max(error) };
                     }
                 }
@@ -255,13 +256,13 @@ mod tests {
         let truth = normal_truth(n, &m);
         assert!(angle(truth, [1.0, 0.0, 0.0]) < 2e-6, "{truth:?}");
         let transform = Transform::new(m).unwrap();
-        assert!(angle(wide(normal_by_m(n, &transform)), [0.0, 0.0, 1.0]) < 2e-6);
+        assert!(angle(wide3(normal_by_m(n, &transform)), [0.0, 0.0, 1.0]) < 2e-6);
         // A mirror keeps the outward side outward: S(−1, 1, 1) takes +x to −x.
         let mirror = normal_truth(Vec3::X, &Mat4::from_scale(Vec3::new(-1.0, 1.0, 1.0)));
         assert_eq!(mirror, [-1.0, 0.0, 0.0]);
         // The ellipsoid x/1e-3 from x = −1 along +x (unit d): the surface at x = −1e-3, t = 1 − 1e-3.
         let t = t_truth(Vec3::new(-1.0, 0.0, 0.0), Vec3::X, Vec3::ZERO, Vec3::new(1e-3, 1.0, 1e3));
-        assert!((t.unwrap() - (1.0 - to_f64(1e-3 as Float))).abs() < 1e-12, "{t:?}");
+        assert!((t.unwrap() - (1.0 - wide(1e-3 as Float))).abs() < 1e-12, "{t:?}");
     }
 
     #[test]

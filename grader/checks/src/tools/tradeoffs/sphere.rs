@@ -6,9 +6,10 @@ use l02_ray_casting::{hit_sphere_algebraic, hit_sphere_geometric, hit_sphere_sta
 use raylab::random::Rng;
 use raylab::{Float, Hit, Interval, Ray, Vec3};
 
-use super::reference::{sphere_truth, to_f64, ulp};
+use super::reference::sphere_truth;
 use super::row::{Pair, Row, own_precision};
 use super::timing::{Effort, time_per_item};
+use raylab_testing::{roots::ulp_wide, wide};
 
 type HitSphere = fn(&Ray, Vec3, Float, Interval) -> Option<Hit>;
 
@@ -49,7 +50,7 @@ fn cases(distance: Float, count: usize, seed: u64) -> Vec<Case> {
             let truth = sphere_truth(origin, dir, center, 1.0);
             let hits = (truth.h2.abs() > 1e-9).then_some(truth.h2 >= 0.0);
             let t_inside = truth.roots.filter(|_| truth.closeness < 0.5).map(|(t0, _)| t0);
-            let clear_of_silhouette = (truth.closeness - 1.0).abs() >= to_f64(Float::EPSILON * distance);
+            let clear_of_silhouette = (truth.closeness - 1.0).abs() >= wide(Float::EPSILON * distance);
             Case { ray: Ray::new(origin, dir), center, hits, clear_of_silhouette, t_inside }
         })
         .collect()
@@ -75,7 +76,7 @@ pub fn measure(effort: &Effort) -> Vec<Row> {
                     }
                 }
                 if let (Some(t0), Some(hit)) = (case.t_inside, found) {
-                    errors.push((to_f64(hit.t) - t0).abs() / ulp(t0));
+                    errors.push((wide(hit.t) - t0).abs() / ulp_wide(t0));
                 }
             }
             let time = time_per_item(effort, cases.len(), || {

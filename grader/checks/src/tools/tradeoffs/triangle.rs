@@ -9,6 +9,7 @@ use l03_polygons_triangles::{
 use raylab::random::Rng;
 use raylab::scene::Mesh;
 use raylab::{Interval, Ray, Vec3};
+use raylab_testing::meshes::{edge_and_vertex_rays, wobbly_octahedron};
 
 use super::row::{Pair, Row, own_precision};
 use super::timing::{Effort, time_per_item};
@@ -22,44 +23,10 @@ pub const VARIANTS: [(&str, HitTriangle); 3] = [
     ("watertight", hit_triangle_watertight),
 ];
 
-/// The octahedron |x| + |y| + |z| = 1 with each vertex scaled by 0.8–1.2 and
-/// moved by up to 0.1 (so no edge lies on nice coordinates): 6 vertices, 8
-/// faces wound counter-clockwise seen from outside, every edge shared by two
-/// faces that share its vertices, so the mesh is closed.
-pub fn wobbly_octahedron(rng: &mut Rng) -> Mesh {
-    let axes = [Vec3::X, -Vec3::X, Vec3::Y, -Vec3::Y, Vec3::Z, -Vec3::Z];
-    let positions = axes.iter().map(|&v| v * rng.range(0.8, 1.2) + rng.in_cube(0.1)).collect();
-    let mut triangles = Vec::new();
-    for (x, y, z) in [(0, 2, 4), (1, 2, 4), (0, 3, 4), (1, 3, 4), (0, 2, 5), (1, 2, 5), (0, 3, 5), (1, 3, 5)]
-    {
-        // (x̂, ŷ, ẑ) is counter-clockwise seen from (1, 1, 1); each negated axis reverses it.
-        let flips = (x % 2) + (y % 2) + (z % 2);
-        triangles.push(if flips % 2 == 0 { [x, y, z] } else { [x, z, y] });
-    }
-    Mesh { positions, triangles, ..Mesh::default() }
-}
-
 /// The mesh moved by `offset` (far from the world origin the rounding grows).
 fn moved(mut mesh: Mesh, offset: Vec3) -> Mesh {
     mesh.positions.iter_mut().for_each(|p| *p += offset);
     mesh
-}
-
-/// Rays from `origin` (inside the mesh) toward every vertex and toward three
-/// points of every edge (fractions 0.5, 0.1 and 0.7 of the way).
-pub fn edge_and_vertex_rays(mesh: &Mesh, origin: Vec3) -> Vec<Ray> {
-    let mut rays: Vec<Ray> = mesh.positions.iter().map(|&p| Ray::new(origin, p - origin)).collect();
-    for triangle in &mesh.triangles {
-        for k in 0..3 {
-            let (i, j) = (triangle[k], triangle[(k + 1) % 3]);
-            // Each edge once: it appears as i→j in one face and j→i in the other.
-            if i < j {
-                let (p, q) = (mesh.positions[i as usize], mesh.positions[j as usize]);
-                rays.extend([0.5, 0.1, 0.7].map(|s| Ray::new(origin, p.lerp(q, s) - origin)));
-            }
-        }
-    }
-    rays
 }
 
 /// The cases: meshes with the point inside that the rays start from.

@@ -1,5 +1,5 @@
-//! Exact arithmetic ground truth shared by the checks and the tradeoffs:
-//! whether a ray meets a box, decided on integer coordinates with no rounding.
+//! Exact ground truth for ray against box (lecture 03's slabs, lecture 09's
+//! boxes): decided on integer coordinates with no rounding.
 
 /// An exact rational num/den with den > 0.
 #[derive(Clone, Copy, Debug)]
@@ -45,4 +45,20 @@ pub fn exact_hits(o: [i64; 3], d: [i64; 3], lo: [i64; 3], hi: [i64; 3]) -> bool 
         _ => true,
     };
     ordered && exit.is_none_or(|x| x.0 > 0)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::exact_hits;
+
+    #[test]
+    fn the_faces_count_and_a_ray_beside_them_misses() {
+        // The box [0, 16]³ (integers stand for sixteenths).
+        let (lo, hi) = ([0, 0, 0], [16, 16, 16]);
+        assert!(exact_hits([-16, 8, 8], [16, 0, 0], lo, hi), "across at t = 1");
+        assert!(exact_hits([0, -16, 8], [0, 16, 0], lo, hi), "along its own face plane");
+        assert!(!exact_hits([-1, -16, 8], [0, 16, 0], lo, hi), "beside its face plane");
+        assert!(!exact_hits([-16, 8, 8], [-16, 0, 0], lo, hi), "pointing away");
+        assert!(exact_hits([8, 8, 8], [1, 2, 3], lo, hi), "from inside");
+    }
 }

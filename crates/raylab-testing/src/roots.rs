@@ -1,19 +1,11 @@
-//! Test support: an accurate reference for ray–sphere roots (used by the
-//! tests of `sphere.rs`). The seeded generator is the kit's `raylab::random::Rng`.
+//! Ray–sphere roots to about one f64 rounding whatever the precision of
+//! `Float`: the ground truth of lecture 02's sphere tests and checks, by a
+//! method none of the lecture's three uses (Newton's method on a residual
+//! evaluated in double-double arithmetic).
 
 use raylab::{Float, Vec3};
 
-/// A `Float` widened to `f64` without rounding.
-// With the kit's `f64` feature this cast is f64 → f64, which clippy flags.
-#[allow(clippy::unnecessary_cast)]
-pub fn to_f64(x: Float) -> f64 {
-    x as f64
-}
-
-/// A `Float` vector widened to `f64` without rounding.
-pub fn wide(v: Vec3) -> [f64; 3] {
-    [to_f64(v.x), to_f64(v.y), to_f64(v.z)]
-}
+use crate::{wide, wide3};
 
 /// The roots t₀ ≤ t₁ of |o + t·d − c|² = r², accurate to about one f64
 /// rounding whatever the precision of `Float`: the inputs are widened to f64
@@ -27,7 +19,7 @@ pub fn wide(v: Vec3) -> [f64; 3] {
 /// halves, only where the roots nearly meet: at most ~60 steps).
 /// `None` when the line misses the sphere (in f64).
 pub fn sphere_roots_reference(origin: Vec3, dir: Vec3, center: Vec3, radius: Float) -> Option<(f64, f64)> {
-    let (o, d, c, r) = (wide(origin), wide(dir), wide(center), to_f64(radius));
+    let (o, d, c, r) = (wide3(origin), wide3(dir), wide3(center), wide(radius));
     let f = [o[0] - c[0], o[1] - c[1], o[2] - c[2]];
     let dot = |u: [f64; 3], v: [f64; 3]| u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
     let a = dot(d, d);
@@ -50,8 +42,11 @@ pub fn sphere_roots_reference(origin: Vec3, dir: Vec3, center: Vec3, radius: Flo
     Some((newton(t_c - half), newton(t_c + half)))
 }
 
-/// g(t) = |f + t·d|² − r² in double-double arithmetic, and g'(t) = 2 d·(f + t·d).
-fn residual(f: [f64; 3], d: [f64; 3], r: f64, t: f64) -> (f64, f64) {
+/// g(t) = |f + t·d|² − r² in double-double arithmetic, and g'(t) = 2 d·(f + t·d):
+/// the residual of the line f + t·d (f = o − c, in f64) against the sphere of
+/// radius r at the origin, accurate to about one f64 rounding where plain f64
+/// cancels (for polishing roots found otherwise, as the trade-offs do).
+pub fn residual(f: [f64; 3], d: [f64; 3], r: f64, t: f64) -> (f64, f64) {
     let mut sum = neg(two_prod(r, r));
     let mut slope = 0.0;
     for i in 0..3 {
@@ -88,9 +83,10 @@ fn neg(x: (f64, f64)) -> (f64, f64) {
     (-x.0, -x.1)
 }
 
-/// One unit in the last place of `x` in `Float` (|x|·ε, the spacing near x).
-pub fn ulp(x: f64) -> f64 {
-    x.abs() * to_f64(Float::EPSILON)
+/// One unit in the last place of `Float` near `x`, counted in f64 as the
+/// lectures count it: |x|·ε.
+pub fn ulp_wide(x: f64) -> f64 {
+    x.abs() * wide(Float::EPSILON)
 }
 
 #[cfg(test)]
@@ -112,7 +108,7 @@ mod tests {
         let y = 0.6 as Float;
         let (t0, t1) = sphere_roots_reference(Vec3::new(0.0, y, 0.0), Vec3::X, Vec3::new(1e8, 0.0, 0.0), 1.0)
             .expect("the ray passes 0.6 from the centre");
-        let h = (1.0 - to_f64(y) * to_f64(y)).sqrt();
+        let h = (1.0 - wide(y) * wide(y)).sqrt();
         // Tolerance 3e-8: two roundings of f64 near 1e8 (spacing 1.5e-8).
         assert!((t0 - (1e8 - h)).abs() <= 3e-8, "{t0}");
         assert!((t1 - (1e8 + h)).abs() <= 3e-8, "{t1}");
