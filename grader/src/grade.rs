@@ -9,7 +9,7 @@ use std::sync::Mutex;
 use std::time::{Duration, Instant};
 
 use crate::compile::{self, BuildOptions, Built};
-use crate::run::{run_check, scratch_dir};
+use crate::run::{run_check, run_judged, scratch_dir};
 use crate::verdict::{Info, Status, Verdict, apply_needs, classify, pretty};
 use crate::workspace::Workspace;
 
@@ -67,6 +67,9 @@ pub struct GradeOptions {
     pub show_progress: bool,
     /// An already built checks binary to use instead of building (tests).
     pub binary: Option<PathBuf>,
+    /// A judge (the checks built with every exercise stubbed, `submission::judge`): the
+    /// checks declared `judged` run in two processes, the verdict the judge's (`run_judged`).
+    pub judge: Option<PathBuf>,
 }
 
 /// The grade of a workspace.
@@ -174,7 +177,13 @@ pub fn grade(ws: &Workspace, options: &GradeOptions) -> Result<Grade, String> {
                 while let Some(index) = queue.lock().map(|mut q| q.next()).unwrap_or(None) {
                     let info = infos[index].clone();
                     let timeout = Duration::from_secs(info.timeout_s.into());
-                    let verdict = match run_check(&built.binary, &info.id, &scratch, &out, timeout) {
+                    let ran = match &options.judge {
+                        Some(judge) if info.judged => {
+                            run_judged(&built.binary, judge, &info.id, &out, timeout)
+                        }
+                        _ => run_check(&built.binary, &info.id, &scratch, &out, timeout),
+                    };
+                    let verdict = match ran {
                         Ok(ran) => classify(info, &ran, lecture_of),
                         Err(e) => Verdict::new(info, Status::Crashed, e),
                     };

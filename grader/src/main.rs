@@ -162,7 +162,7 @@ fn precision_is_f64() -> bool {
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
-        None => grade_command(&Workspace::open(&workspace::own_root()), &cli.grade, false, None),
+        None => grade_command(&Workspace::open(&workspace::own_root()), &cli.grade, None),
         Some(Cmd::Hint { select }) => {
             Workspace::open(&workspace::own_root()).and_then(|ws| hint(&ws, &select))
         }
@@ -173,8 +173,14 @@ fn main() -> ExitCode {
             handout::write(&workspace::own_root(), &dir, force).map(|()| true)
         }
         Some(Cmd::Grade { submission, workdir, grade }) => {
-            submission::prepare(&workspace::own_root(), &submission, workdir.as_deref())
-                .and_then(|(ws, target)| grade_command(&Ok(ws), &grade, true, Some(target)))
+            // The student's code runs as this user: keep it out of this process's pipes.
+            platform::keep_others_out();
+            submission::prepare(&workspace::own_root(), &submission, workdir.as_deref()).and_then(
+                |(ws, target)| {
+                    let judge = submission::judge(&workspace::own_root(), &ws.root, &options())?;
+                    grade_command(&Ok(ws), &grade, Some(Submission { target, judge }))
+                },
+            )
         }
         Some(Cmd::Gradescope { dir, force }) => {
             submission::gradescope_bundle(&workspace::own_root(), &dir, force).map(|()| true)
@@ -209,22 +215,34 @@ fn options() -> GradeOptions {
         jobs: std::thread::available_parallelism().map_or(2, |n| n.get()),
         show_progress: true,
         binary: std::env::var_os("RAYLAB_CHECKS_BINARY").map(PathBuf::from),
+        judge: None,
     }
 }
 
 /// Grades and prints; `Ok(false)` when `--strict` and not everything passed.
+/// A submission graded in a work folder (`grader grade --submission`).
+struct Submission {
+    /// The work folder's target folder.
+    target: PathBuf,
+    /// The judge binary (`submission::judge`).
+    judge: PathBuf,
+}
+
 fn grade_command(
     ws: &Result<Workspace, String>,
     args: &GradeArgs,
-    hidden: bool,
-    target_dir: Option<PathBuf>,
+    submission: Option<Submission>,
 ) -> Result<bool, String> {
     let ws = ws.as_ref().map_err(Clone::clone)?;
     let mut options = options();
     options.selection = Selection::parse(&args.select)?;
     options.only_prerequisites = true;
-    options.hidden = hidden;
-    options.target_dir = target_dir;
+    if let Some(Submission { target, judge }) = submission {
+        // A submission: hidden checks in, judged checks judged apart from the student's code.
+        options.hidden = true;
+        options.target_dir = Some(target);
+        options.judge = Some(judge);
+    }
     if let Some(jobs) = args.jobs {
         options.jobs = jobs;
     }

@@ -6,6 +6,52 @@
 
 use std::path::Path;
 
+/// Keeps other processes of this user out of this one (Linux: not dumpable, so
+/// they can neither open its `/proc/PID/fd` pipes nor attach a debugger): the
+/// student's code runs as the same user when a submission is graded on an
+/// instructor's machine. Best effort; elsewhere nothing (a separate user, as
+/// on Gradescope, keeps them out everywhere).
+#[cfg(all(target_os = "linux", not(feature = "portable")))]
+pub fn keep_others_out() {
+    let _ = nix::sys::prctl::set_dumpable(false);
+}
+
+/// Keeps other processes of this user out of this one: nothing to do here.
+#[cfg(any(not(target_os = "linux"), feature = "portable"))]
+pub fn keep_others_out() {}
+
+/// Starts the child in a process group of its own (its id the group's), so that
+/// [`end_group`] ends whatever it started.
+#[cfg(all(unix, not(feature = "portable")))]
+pub fn own_group(command: &mut std::process::Command) {
+    use std::os::unix::process::CommandExt;
+    command.process_group(0);
+}
+
+/// Ends the process group of a child started by [`own_group`]: the processes it
+/// started and left running (a `sleep` holding its output pipe, say).
+#[cfg(all(unix, not(feature = "portable")))]
+pub fn end_group(child: &std::process::Child) {
+    use nix::sys::signal::{Signal, killpg};
+    use nix::unistd::Pid;
+    if let Ok(id) = i32::try_from(child.id()) {
+        let _ = killpg(Pid::from_raw(id), Signal::SIGKILL);
+    }
+}
+
+/// A process group of its own: none here (the child alone is stopped; what it
+/// started and left running is not waited for past the drains' grace).
+#[cfg(any(not(unix), feature = "portable"))]
+pub fn own_group(command: &mut std::process::Command) {
+    let _ = command;
+}
+
+/// Ends the child's process group: nothing here (see [`own_group`]).
+#[cfg(any(not(unix), feature = "portable"))]
+pub fn end_group(child: &std::process::Child) {
+    let _ = child;
+}
+
 /// How a child that ended without an exit code was stopped: its signal.
 #[cfg(all(unix, not(feature = "portable")))]
 pub fn signal_name(status: std::process::ExitStatus) -> String {

@@ -2,13 +2,17 @@
 //! what it may print: whatever the student's code does, the grader gets an
 //! answer back and carries on.
 
-use std::io::Read;
+use std::ffi::OsString;
+use std::io::{BufRead, BufReader, Read};
+use std::net::TcpStream;
 use std::path::{Path, PathBuf};
 use std::process::{Command, ExitStatus, Stdio};
-use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
+use std::sync::{Arc, Mutex};
 use std::thread;
 use std::time::{Duration, Instant};
+
+use raylab_protocol::{JUDGE_LISTENING, JUDGE_VERDICT, NO_VERDICT};
 
 /// How much of a check's stdout and stderr the grader keeps (each): enough
 /// for a panic message and a backtrace's first frames.
@@ -41,28 +45,126 @@ pub fn run_check(
     out: &Path,
     timeout: Duration,
 ) -> Result<Ran, String> {
-    let verdict = scratch.join(format!("{}.json", id.replace(['/', ':'], "_")));
-    let _ = std::fs::remove_file(&verdict);
-    let start = Instant::now();
-    let mut child = Command::new(binary)
-        .args(["run", id, "--verdict"])
-        .arg(&verdict)
-        .arg("--out")
+    let verdict = verdict_file(scratch, id);
+    let mut args: Vec<OsString> = vec!["run".into(), id.into(), "--verdict".into(), verdict.clone().into()];
+    args.extend(["--out".into(), out.into()]);
+    let mut ran = run_process(binary, id, &args, timeout)?;
+    ran.verdict = std::fs::read_to_string(&verdict).ok();
+    Ok(ran)
+}
+
+/// How long a judge may take once its subject has ended: it runs no student
+/// code, only the check's own (an image comparison at most).
+const JUDGE_GRACE: Duration = Duration::from_secs(60);
+
+/// Runs a judged check (`raylab-checks/src/judge.rs`): `judge ID` from the
+/// `judge` binary, which runs no student code and prints the verdict, and
+/// `run ID --channel ADDR` from `subject`, the student's build, under the time
+/// limit and output caps. The verdict is the judge's; when it has none (the
+/// subject ended before the check did), how the subject ended.
+pub fn run_judged(
+    subject: &Path,
+    judge: &Path,
+    id: &str,
+    out: &Path,
+    timeout: Duration,
+) -> Result<Ran, String> {
+    let mut judging = Command::new(judge)
+        .args(["judge", id, "--out"])
         .arg(out)
-        // Checks run side by side, one per core: each renders on one thread, and the same code gives
-        // the same pixels on every run.
         .env("RAYON_NUM_THREADS", "1")
         .env("RUST_BACKTRACE", "0")
         .stdin(Stdio::null())
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
         .spawn()
-        .map_err(|e| format!("could not start {}: {e}", binary.display()))?;
+        .map_err(|e| format!("could not start the judge {}: {e}", judge.display()))?;
+    let mut first = String::new();
+    let mut judge_out = BufReader::new(judging.stdout.take().ok_or("the judge's stdout")?);
+    let _ = judge_out.read_line(&mut first);
+    let Some(address) = first.trim().strip_prefix(JUDGE_LISTENING).map(str::to_owned) else {
+        let _ = judging.kill();
+        let _ = judging.wait();
+        let mut stderr = String::new();
+        if let Some(mut e) = judging.stderr.take() {
+            let _ = e.read_to_string(&mut stderr);
+        }
+        return Err(format!("the judge of {id} did not start: {}", stderr.trim()));
+    };
+    let judge_err = judging.stderr.take();
+    let judge_streams = thread::spawn(move || {
+        let (mut out, mut err) = (String::new(), String::new());
+        let _ = judge_out.read_to_string(&mut out);
+        if let Some(mut e) = judge_err {
+            let _ = e.read_to_string(&mut err);
+        }
+        (out, err)
+    });
+    let args: Vec<OsString> =
+        vec!["run".into(), id.into(), "--channel".into(), address.clone().into(), "--out".into(), out.into()];
+    let ran = run_process(subject, id, &args, timeout);
+    // A subject that never connected leaves the judge waiting for it: this connection ends that
+    // wait (with nothing to read). After a subject did connect, the judge listens no more.
+    if let Ok(address) = address.parse() {
+        let _ = TcpStream::connect_timeout(&address, Duration::from_secs(1));
+    }
+    let deadline = Instant::now() + JUDGE_GRACE;
+    let judged = loop {
+        match judging.try_wait() {
+            Ok(Some(status)) => break Some(status),
+            Ok(None) if Instant::now() >= deadline => break None,
+            Ok(None) => thread::sleep(Duration::from_millis(5)),
+            Err(e) => return Err(format!("waiting for the judge of {id}: {e}")),
+        }
+    };
+    if judged.is_none() {
+        let _ = judging.kill();
+        let _ = judging.wait();
+    }
+    let (printed, errors) = judge_streams.join().unwrap_or_default();
+    let mut ran = ran?;
+    match judged {
+        Some(status) if status.success() => {
+            ran.verdict =
+                printed.lines().rev().find_map(|l| l.strip_prefix(JUDGE_VERDICT)).map(str::to_owned);
+            Ok(ran)
+        }
+        // The subject ended before the check did: how it ended is the verdict.
+        Some(status) if status.code() == Some(NO_VERDICT) => Ok(ran),
+        Some(status) => Err(format!("the judge of {id} failed ({status}): {}", errors.trim())),
+        None => Err(format!("the judge of {id} took longer than {} s", JUDGE_GRACE.as_secs())),
+    }
+}
+
+fn verdict_file(scratch: &Path, id: &str) -> PathBuf {
+    let verdict = scratch.join(format!("{}.json", id.replace(['/', ':'], "_")));
+    let _ = std::fs::remove_file(&verdict);
+    verdict
+}
+
+/// Runs `binary ARGS` (one check, `id`) with a time limit and a cap on its output.
+fn run_process(binary: &Path, id: &str, args: &[OsString], timeout: Duration) -> Result<Ran, String> {
+    let start = Instant::now();
+    let mut command = Command::new(binary);
+    command
+        .args(args)
+        // Checks run side by side, one per core: each renders on one thread, and the same code gives
+        // the same pixels on every run.
+        .env("RAYON_NUM_THREADS", "1")
+        .env("RUST_BACKTRACE", "0")
+        .stdin(Stdio::null())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped());
+    // In a process group of its own, so that what it starts ends with it.
+    crate::platform::own_group(&mut command);
+    let mut child = command.spawn().map_err(|e| format!("could not start {}: {e}", binary.display()))?;
     let printed = Arc::new(AtomicU64::new(0));
     let flood = Arc::new(AtomicBool::new(false));
     let drain = |stream: Option<Box<dyn Read + Send>>| {
         let (printed, flood) = (printed.clone(), flood.clone());
-        thread::spawn(move || drain_stream(stream, &printed, &flood))
+        let kept = Arc::new(Mutex::new(Vec::new()));
+        let into = kept.clone();
+        (thread::spawn(move || drain_stream(stream, &into, &printed, &flood)), kept)
     };
     let stdout = drain(child.stdout.take().map(|s| Box::new(s) as Box<dyn Read + Send>));
     let stderr = drain(child.stderr.take().map(|s| Box::new(s) as Box<dyn Read + Send>));
@@ -87,38 +189,55 @@ pub fn run_check(
         let _ = child.kill();
         let _ = child.wait();
     }
-    let stdout = stdout.join().unwrap_or_default();
-    let stderr = stderr.join().unwrap_or_default();
+    // Whatever it started goes too (a child holding its output pipe would keep the drains waiting).
+    crate::platform::end_group(&child);
+    // And a process that left the group and kept the pipes is not waited for.
+    let drained = Instant::now() + DRAIN_GRACE;
+    while !(stdout.0.is_finished() && stderr.0.is_finished()) && Instant::now() < drained {
+        thread::sleep(Duration::from_millis(5));
+    }
+    let text = |kept: &Arc<Mutex<Vec<u8>>>| {
+        String::from_utf8_lossy(&kept.lock().map(|k| k.clone()).unwrap_or_default()).into_owned()
+    };
     Ok(Ran {
         status,
         timed_out,
         too_much_output: flood.load(Ordering::Relaxed),
-        verdict: std::fs::read_to_string(&verdict).ok(),
-        stdout,
-        stderr,
+        verdict: None,
+        stdout: text(&stdout.1),
+        stderr: text(&stderr.1),
         seconds: start.elapsed().as_secs_f64(),
     })
 }
 
-/// Reads a stream to its end, keeping its first [`KEPT_OUTPUT`] bytes and
-/// raising `flood` once all streams together passed [`MAX_OUTPUT`].
-fn drain_stream(stream: Option<Box<dyn Read + Send>>, printed: &AtomicU64, flood: &AtomicBool) -> String {
-    let Some(mut stream) = stream else { return String::new() };
-    let mut kept = Vec::new();
+/// How long the grader waits for a check's output pipes to close once the
+/// check has ended and its process group is gone.
+const DRAIN_GRACE: Duration = Duration::from_secs(2);
+
+/// Reads a stream to its end, keeping its first [`KEPT_OUTPUT`] bytes in `kept`
+/// and raising `flood` once all streams together passed [`MAX_OUTPUT`].
+fn drain_stream(
+    stream: Option<Box<dyn Read + Send>>,
+    kept: &Mutex<Vec<u8>>,
+    printed: &AtomicU64,
+    flood: &AtomicBool,
+) {
+    let Some(mut stream) = stream else { return };
     let mut buffer = [0u8; 64 * 1024];
     loop {
         match stream.read(&mut buffer) {
             Ok(0) | Err(_) => break,
             Ok(n) => {
-                let room = KEPT_OUTPUT.saturating_sub(kept.len());
-                kept.extend_from_slice(&buffer[..n.min(room)]);
+                if let Ok(mut kept) = kept.lock() {
+                    let room = KEPT_OUTPUT.saturating_sub(kept.len());
+                    kept.extend_from_slice(&buffer[..n.min(room)]);
+                }
                 if printed.fetch_add(n as u64, Ordering::Relaxed) + n as u64 > MAX_OUTPUT {
                     flood.store(true, Ordering::Relaxed);
                 }
             }
         }
     }
-    String::from_utf8_lossy(&kept).into_owned()
 }
 
 /// A scratch folder for verdict files.

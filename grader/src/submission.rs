@@ -58,16 +58,7 @@ pub fn prepare(
             taken.push(lecture.number.clone());
         } else {
             // Not submitted: the handout's stubs.
-            let reference = root.join("lectures").join(&lecture.folder).join("src");
-            mirror(&reference, &target, &|_| true)?;
-            for file in walk(&target)? {
-                if file.extension().is_some_and(|e| e == "rs") {
-                    let text =
-                        std::fs::read_to_string(&file).map_err(|e| format!("{}: {e}", file.display()))?;
-                    let (stubbed, _) = stub_solutions(&text, &lecture.number, &file.display().to_string())?;
-                    write_if_changed(&file, stubbed.as_bytes())?;
-                }
-            }
+            stub_lecture(&root, lecture, &target)?;
         }
     }
     eprintln!(
@@ -78,6 +69,52 @@ pub fn prepare(
     );
     let target = work.join("target");
     Ok((Workspace::open(&work)?, target))
+}
+
+/// Writes lecture `lecture`'s sources into `target` as the handout has them:
+/// every exercise `todo!()`.
+fn stub_lecture(root: &Path, lecture: &crate::workspace::Lecture, target: &Path) -> Result<(), String> {
+    let reference = root.join("lectures").join(&lecture.folder).join("src");
+    mirror_as(&reference, target, &|_| true, &|relative, bytes| {
+        if !relative.ends_with(".rs") {
+            return Ok(bytes);
+        }
+        let text = String::from_utf8(bytes).map_err(|e| format!("{relative}: {e}"))?;
+        let (stubbed, _) = stub_solutions(&text, &lecture.number, relative)?;
+        Ok(stubbed.into_bytes())
+    })
+}
+
+/// The judge of a submission graded in `work`: the instructor's workspace with
+/// every exercise stubbed (`todo!()`) and the hidden checks in, built in
+/// `work/target/judge`. It runs no student code and no reference solution: a
+/// check that called either without `judge::student` would stop on a stub
+/// (the reference graded as a submission proves there is none). Built once;
+/// later submissions find it up to date.
+pub fn judge(root: &Path, work: &Path, options: &crate::grade::GradeOptions) -> Result<PathBuf, String> {
+    let root = root.canonicalize().map_err(|e| format!("{}: {e}", root.display()))?;
+    let tree = work.join("target").join("judge");
+    mirror(&root, &tree, &|relative| !under(relative, NOT_COPIED) && !is_lecture_source(relative))?;
+    let ws = Workspace::open(&root)?;
+    for lecture in &ws.lectures {
+        stub_lecture(&root, lecture, &tree.join("lectures").join(&lecture.folder).join("src"))?;
+    }
+    let judge_ws = Workspace::open(&tree)?;
+    let built = crate::compile::build(
+        &judge_ws,
+        &crate::compile::BuildOptions {
+            lectures: judge_ws.lectures.iter().map(|l| l.number.clone()).collect(),
+            hidden: true,
+            release: options.release,
+            f64: options.f64,
+            target_dir: Some(tree.join("target")),
+            show_progress: options.show_progress,
+        },
+    )?;
+    if let Some((lecture, error)) = built.failed.iter().next() {
+        return Err(format!("the judge does not compile (lecture {lecture}): {error:?}"));
+    }
+    Ok(built.binary)
 }
 
 /// The folder of `submission` that holds the lecture folders: its
@@ -137,6 +174,20 @@ fn walk(dir: &Path) -> Result<Vec<PathBuf>, String> {
 /// to `from`, with `/`) accepts: new or changed files are written, files
 /// that are gone are removed, unchanged ones are left alone.
 fn mirror(from: &Path, to: &Path, keep: &dyn Fn(&str) -> bool) -> Result<(), String> {
+    mirror_as(from, to, keep, &|_, bytes| Ok(bytes))
+}
+
+/// A file's content as written: from its path relative to the mirror's root and its bytes.
+type Content<'a> = dyn Fn(&str, Vec<u8>) -> Result<Vec<u8>, String> + 'a;
+
+/// [`mirror`], each file's content as `content(relative path, bytes)` makes it:
+/// an unchanged result is not written again, so cargo sees nothing new.
+fn mirror_as(
+    from: &Path,
+    to: &Path,
+    keep: &dyn Fn(&str) -> bool,
+    content: &Content<'_>,
+) -> Result<(), String> {
     let mut wanted = BTreeSet::new();
     let mut stack = vec![from.to_owned()];
     while let Some(dir) = stack.pop() {
@@ -153,7 +204,7 @@ fn mirror(from: &Path, to: &Path, keep: &dyn Fn(&str) -> bool) -> Result<(), Str
                 stack.push(path);
             } else if kind.is_file() {
                 let bytes = std::fs::read(&path).map_err(|e| format!("{}: {e}", path.display()))?;
-                write_if_changed(&to.join(&relative), &bytes)?;
+                write_if_changed(&to.join(&relative), &content(&relative, bytes)?)?;
                 wanted.insert(relative);
             }
         }

@@ -245,6 +245,7 @@ pub fn test_info(id: &str) -> Info {
         hidden: false,
         timeout_s: 10,
         available: true,
+        judged: false,
     }
 }
 

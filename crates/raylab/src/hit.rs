@@ -11,7 +11,7 @@ use crate::ray::{Interval, Ray};
 /// or flipped (false). `object` and `material` are indices into the scene's
 /// objects and materials, filled in by the group that found the hit (0 for a
 /// bare shape). Book: §0.3 Hits and normals.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Hit {
     pub t: Float,
     pub point: Vec3,

@@ -8,7 +8,7 @@ use crate::math::{Float, Vec3};
 
 /// A `width × height` image of linear colours, row-major, pixel (0, 0) at the
 /// top left.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Image {
     pub width: u32,
     pub height: u32,

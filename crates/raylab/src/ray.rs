@@ -7,7 +7,7 @@ use crate::math::{Float, Vec3};
 /// `dir` need not be unit length: a ray taken into an object's space by an
 /// affine map keeps its t, so a hit's t stays in world units. Primary rays
 /// from the cameras have unit directions. Book: §0.3 Rays.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Ray {
     pub origin: Vec3,
     pub dir: Vec3,
@@ -29,7 +29,7 @@ impl Ray {
 ///
 /// Intersection routines take the interval and shrink `max` to the closest
 /// hit found so far. Book: §0.3 Rays.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Interval {
     pub min: Float,
     pub max: Float,

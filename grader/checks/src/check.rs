@@ -49,15 +49,19 @@ pub struct Meta {
     pub needs: &'static [&'static str],
     /// What the check tests, in one line (shown with a failure and in the report).
     pub about: &'static str,
+    /// Its code takes every value of the student's code through `judge::student`, so a
+    /// submission's grade can come from a judge that runs none of it (`judge.rs`). Set for a
+    /// lecture's checks at once, by `declare_checks!`.
+    pub judged: bool,
 }
 
 impl Meta {
     pub const fn unit(exercise: &'static str, about: &'static str) -> Self {
-        Self { exercise, name: "unit", kind: Kind::Unit, points: 1, needs: &[], about }
+        Self { exercise, name: "unit", kind: Kind::Unit, points: 1, needs: &[], about, judged: false }
     }
 
     pub const fn extreme(exercise: &'static str, name: &'static str, about: &'static str) -> Self {
-        Self { exercise, name, kind: Kind::Extreme, points: 1, needs: &[], about }
+        Self { exercise, name, kind: Kind::Extreme, points: 1, needs: &[], about, judged: false }
     }
 
     // INSTRUCTOR BEGIN
@@ -80,6 +84,10 @@ impl Meta {
     pub const fn needs(self, needs: &'static [&'static str]) -> Self {
         Self { needs, ..self }
     }
+
+    pub const fn judged(self, judged: bool) -> Self {
+        Self { judged, ..self }
+    }
 }
 
 /// A check as the grader sees it: `meta` declared in lecture `lecture`.
@@ -98,6 +106,7 @@ pub fn info(lecture: &str, meta: &Meta, hidden: bool, available: bool) -> Info {
             _ => UNIT_TIMEOUT_S,
         },
         available,
+        judged: meta.judged,
     }
 }
 

@@ -136,6 +136,8 @@ pub fn infos() -> Vec<Info> {
             points: 1,
             needs: stages::needs(&file.lecture),
             about: "object-id, depth and normal images against the reference's",
+            // Not yet: the scene checks still judge in the process that runs the student's code.
+            judged: false,
         };
         if has_geometry_check(&file.lecture) {
             infos.push(crate::check::info(&file.lecture, &geometry, false, stages::built(&file.lecture)));

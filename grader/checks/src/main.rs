@@ -5,6 +5,9 @@
 //! - `raylab-checks list` prints every check as JSON, with whether its code is built;
 //! - `raylab-checks run ID --verdict FILE --out DIR` runs one check and writes
 //!   its outcome to FILE (a panic writes the panic there first);
+//! - `raylab-checks judge ID --verdict FILE --out DIR` and `raylab-checks run ID
+//!   --channel ADDR --out DIR` run one check in two processes, the second the
+//!   student's code and the first the verdict (`judge.rs`);
 //! - `render`, `bless` and `bench-rays` are the tools of `grader render`,
 //!   `grader bless` and `grader bench-rays`, present when every lecture is built.
 
@@ -14,6 +17,7 @@
 
 mod check;
 mod images;
+mod judge;
 mod lectures;
 mod platform;
 #[cfg(feature = "l03")]
@@ -47,8 +51,21 @@ enum Command {
         /// `NN/exercise/name`.
         id: String,
         /// Where to write the outcome (JSON).
+        #[arg(long, required_unless_present = "channel", conflicts_with = "channel")]
+        verdict: Option<PathBuf>,
+        /// Where image checks write expected / yours / diff.
         #[arg(long)]
-        verdict: PathBuf,
+        out: PathBuf,
+        /// As the subject of a judged check: send the student's values to the judge listening
+        /// at this loopback address, and write no verdict (src/judge.rs).
+        #[arg(long)]
+        channel: Option<String>,
+    },
+    /// Judge one check from the values a subject sends (`run ID --channel`): print
+    /// `listening ADDR`, take the subject's connection, print `verdict JSON`.
+    Judge {
+        /// `NN/exercise/name`.
+        id: String,
         /// Where image checks write expected / yours / diff.
         #[arg(long)]
         out: PathBuf,
@@ -81,7 +98,16 @@ fn main() -> ExitCode {
             infos.extend(images::infos());
             serde_json::to_string_pretty(&infos).map(|json| println!("{json}")).map_err(|e| e.to_string())
         }
-        Command::Run { id, verdict, out } => run(&id, &verdict, &out),
+        Command::Run { id, verdict, out, channel } => match (channel, verdict) {
+            // Connected before any student code runs: the judge takes the first connection.
+            (Some(address), _) => judge::connect(&address).and_then(|()| run(&id, VerdictTo::Judge, &out)),
+            (None, Some(file)) => run(&id, VerdictTo::File(file), &out),
+            (None, None) => Err("--verdict FILE or --channel ADDR".into()),
+        },
+        Command::Judge { id, out } => {
+            platform::keep_others_out();
+            judge::serve().and_then(|()| run(&id, VerdictTo::Stdout, &out))
+        }
         #[cfg(feature = "complete")]
         Command::Render(args) => tools::render::render(&args),
         #[cfg(feature = "complete")]
@@ -107,13 +133,38 @@ fn main() -> ExitCode {
 /// of N bytes failed") instead of swapping the machine.
 const MEMORY_LIMIT: u64 = 4 << 30;
 
-/// Runs check `id`: a panic hook records any panic in `verdict` (the grader
+/// Where a check's outcome goes.
+enum VerdictTo {
+    /// A file (`run --verdict`: local grading, one process).
+    File(PathBuf),
+    /// The judge's stdout, as a `verdict JSON` line (`judge`).
+    Stdout,
+    /// Nowhere: a subject (`run --channel`) reports values, never a verdict.
+    Judge,
+}
+
+impl VerdictTo {
+    fn write(&self, outcome: &Outcome) -> Result<(), String> {
+        let json = serde_json::to_string(outcome).map_err(|e| e.to_string())?;
+        match self {
+            VerdictTo::File(file) => {
+                std::fs::write(file, json).map_err(|e| format!("{}: {e}", file.display()))
+            }
+            VerdictTo::Stdout => judge::print_verdict(&json),
+            VerdictTo::Judge => Ok(()),
+        }
+    }
+}
+
+/// Runs check `id`: a panic hook records any panic as the outcome (the grader
 /// tells `todo!()` from other panics by its message), then the outcome
-/// overwrites it when the check returns.
-fn run(id: &str, verdict: &Path, out: &Path) -> Result<(), String> {
+/// replaces it when the check returns. A subject reports the panic to its
+/// judge instead, and writes nothing.
+fn run(id: &str, verdict: VerdictTo, out: &Path) -> Result<(), String> {
+    // The panic hook holds it for the life of the process (a process per check).
+    let verdict: &'static VerdictTo = Box::leak(Box::new(verdict));
     // Best effort: where limits cannot be set, the grader's time limit still holds.
     platform::limit_memory(MEMORY_LIMIT);
-    let file = verdict.to_owned();
     let default_hook = std::panic::take_hook();
     std::panic::set_hook(Box::new(move |info| {
         let message = info
@@ -123,9 +174,11 @@ fn run(id: &str, verdict: &Path, out: &Path) -> Result<(), String> {
             .or_else(|| info.payload().downcast_ref::<String>().cloned())
             .unwrap_or_else(|| "(a panic without a message)".to_owned());
         let (path, line) = info.location().map_or((String::new(), 0), |l| (l.file().to_owned(), l.line()));
-        let panicked = check::Outcome::Panicked { message, file: path, line };
-        if let Ok(json) = serde_json::to_string(&panicked) {
-            let _ = std::fs::write(&file, json);
+        match verdict {
+            VerdictTo::Judge => judge::report_panic(&message, &path, line),
+            to => {
+                let _ = to.write(&check::Outcome::Panicked { message, file: path, line });
+            }
         }
         default_hook(info);
     }));
@@ -141,6 +194,5 @@ fn run(id: &str, verdict: &Path, out: &Path) -> Result<(), String> {
         Ok(detail) => Outcome::Passed { detail, images: None },
         Err(failure) => Outcome::Failed(failure),
     };
-    let json = serde_json::to_string(&outcome).map_err(|e| e.to_string())?;
-    std::fs::write(verdict, json).map_err(|e| format!("{}: {e}", verdict.display()))
+    verdict.write(&outcome)
 }

@@ -41,6 +41,20 @@ pub fn thread_cpu_seconds() -> Option<f64> {
     None
 }
 
+/// Keeps other processes of this user out of this one (Linux: not dumpable, so
+/// they can neither open its `/proc/PID/fd` pipes nor attach a debugger): the
+/// student's code runs as the same user when a submission is graded on an
+/// instructor's machine. Best effort; elsewhere nothing (a separate user, as
+/// on Gradescope, keeps them out everywhere).
+#[cfg(all(target_os = "linux", not(feature = "portable")))]
+pub fn keep_others_out() {
+    let _ = nix::sys::prctl::set_dumpable(false);
+}
+
+/// Keeps other processes of this user out of this one: nothing to do here.
+#[cfg(any(not(target_os = "linux"), feature = "portable"))]
+pub fn keep_others_out() {}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -5,6 +5,17 @@
 
 use serde::{Deserialize, Serialize};
 
+/// The first line a judge prints: this, then the loopback address the
+/// subject is to connect to (`raylab-checks run ID --channel ADDR`).
+pub const JUDGE_LISTENING: &str = "listening ";
+
+/// How a judge's verdict line starts: this, then the outcome as JSON.
+pub const JUDGE_VERDICT: &str = "verdict ";
+
+/// A judge's exit code when it writes no verdict: the subject's values ended
+/// before the check did, and how the subject ended is the verdict.
+pub const NO_VERDICT: i32 = 3;
+
 /// The kinds of check (ARCHITECTURE.md, "The exercise contract").
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "lowercase")]
@@ -38,6 +49,11 @@ pub struct Info {
     pub timeout_s: u32,
     /// Its code is in this build (its lecture compiled).
     pub available: bool,
+    /// Graded as a submission, it is judged by a process that runs no student
+    /// code (`raylab-checks judge`), the student's values sent to it by the
+    /// process that runs them (`raylab-checks run --channel`).
+    #[serde(default)]
+    pub judged: bool,
 }
 
 impl Info {
@@ -133,9 +149,14 @@ mod tests {
             hidden: false,
             timeout_s: 10,
             available: true,
+            judged: false,
         };
         assert_eq!(info.short(), "hit_slabs/unit");
         assert_eq!(info.exercise_id(), "03/hit_slabs");
         assert_eq!(serde_json::to_value(&info).unwrap()["kind"], "unit");
+        // A list from a checks binary without the field reads as not judged.
+        let mut value = serde_json::to_value(&info).unwrap();
+        value.as_object_mut().unwrap().remove("judged");
+        assert!(!serde_json::from_value::<Info>(value).unwrap().judged);
     }
 }

@@ -17,8 +17,15 @@ use crate::check::{CheckResult, Info, Meta};
 /// even when the lecture does not compile) and, with the lecture's feature,
 /// `run`, which runs the row whose `exercise/name` is asked.
 macro_rules! declare_checks {
+    // `judged`: every check below takes the student's values through `judge::student`.
+    ($feature:literal, judged; $($meta:expr => $run:expr),+ $(,)?) => {
+        declare_checks!(@ $feature, true; $($meta => $run),+);
+    };
     ($feature:literal; $($meta:expr => $run:expr),+ $(,)?) => {
-        pub const CHECKS: &[crate::check::Meta] = &[$($meta),+];
+        declare_checks!(@ $feature, false; $($meta => $run),+);
+    };
+    (@ $feature:literal, $judged:literal; $($meta:expr => $run:expr),+) => {
+        pub const CHECKS: &[crate::check::Meta] = &[$($meta.judged($judged)),+];
 
         #[cfg(feature = $feature)]
         pub fn run(name: &str) -> Option<crate::check::CheckResult> {

@@ -11,8 +11,9 @@ pub(super) fn closest_of_three() -> CheckResult {
     // Listed far, near, middle: the nearest (index 1, z = 0) is hit at t = 4.
     let objects = [sphere(-10.0), sphere(0.0), sphere(-5.0)];
     let case = "spheres at z = −10, 0, −5 (in that order), ray from (0, 0, 5) along −z";
-    let got = Group::new(&objects)
-        .closest_hit(&ray([0.0, 0.0, 5.0], [0.0, 0.0, -1.0]), Interval::new(0.0, Float::INFINITY));
+    let r = ray([0.0, 0.0, 5.0], [0.0, 0.0, -1.0]);
+    let got =
+        crate::judge::student(|| Group::new(&objects).closest_hit(&r, Interval::new(0.0, Float::INFINITY)));
     let show = |h: &Option<Hit>| maybe(h, |h| format!("object {} at t = {}", h.object, num(h.t)));
     let Some(h) = got else {
         return Err(fail(

@@ -6,7 +6,7 @@ const SPHERE_CAUSE: &str =
     "solve |o + t·d − c|² = r², keep the nearer root inside the range, else the farther one";
 
 declare_checks! {
-    "l02";
+    "l02", judged;
     Meta::unit(
         "hit_sphere_algebraic",
         "the textbook quadratic at ordinary rays: front, inside, miss, behind, tangent",

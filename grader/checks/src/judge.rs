@@ -1,0 +1,242 @@
+//! Who decides a check's verdict: the process that runs the student's code
+//! must not be the one that judges it.
+//!
+//! Graded locally (`cargo run -p grader`) a check runs in one process, as
+//! ever ([`Mode::Direct`]). Graded as a submission, each judged check runs
+//! twice, in step, in two processes the driver starts:
+//!
+//! - the **subject** (`raylab-checks run ID --channel ADDR`), built from the
+//!   student's lectures, runs the check's code; each value the student's code
+//!   returns ([`student`]) it sends to the judge, and each decision that needs
+//!   what only the judge holds ([`decide`]: a snapshot, a hidden answer) it
+//!   receives from the judge. It writes no verdict.
+//! - the **judge** (`raylab-checks judge ID`), built from the
+//!   course with every exercise stubbed (`todo!()`), runs the same code, but
+//!   where the subject calls the student it takes the value the subject sent,
+//!   so no student code (and no reference solution) runs in it; it makes the
+//!   decisions and prints the verdict (a pipe only the driver reads; on
+//!   Linux the judge is not dumpable, so the student's processes cannot open
+//!   its pipes through `/proc` either).
+//!
+//! Both run the same deterministic code on the same inputs, so they take the
+//! same path; a value of the wrong type or from another call site ends the
+//! check as failed, and a subject that stops early (an exit, a crash, a
+//! forged early end) leaves the judge without a verdict, which the driver
+//! reports from how the subject ended. What the student's process can send
+//! is what the student's code could return: values, never a verdict.
+
+use std::io::{Read, Write};
+use std::net::{TcpListener, TcpStream};
+use std::sync::{Mutex, OnceLock};
+
+use serde::de::DeserializeOwned;
+use serde::{Deserialize, Serialize};
+
+use raylab_protocol::{JUDGE_LISTENING, JUDGE_VERDICT, NO_VERDICT};
+
+use crate::check::{Outcome, fail};
+
+/// What one process tells the other.
+#[derive(Debug, Serialize, Deserialize)]
+enum Frame {
+    /// A value of the student's code (subject → judge) or a decision (judge →
+    /// subject), postcard-encoded, with the call site that made it.
+    Value { site: String, bytes: Vec<u8> },
+    /// The student's code panicked (subject → judge): what the check would have
+    /// written itself.
+    Panic { message: String, file: String, line: u32 },
+}
+
+/// How this process takes part in a check.
+enum Mode {
+    /// One process runs the student's code and judges it: local grading.
+    Direct,
+    /// Runs the student's code and reports its values.
+    Subject(Mutex<TcpStream>),
+    /// Judges from the values reported.
+    Judge(Mutex<TcpStream>),
+}
+
+static MODE: OnceLock<Mode> = OnceLock::new();
+
+fn mode() -> &'static Mode {
+    MODE.get_or_init(|| Mode::Direct)
+}
+
+/// The largest frame read: a 1024 × 1024 image of f64 colours is 24 MiB.
+const MAX_FRAME: u32 = 64 << 20;
+
+/// A value computed by the student's code: `f()` in the subject (sent to the
+/// judge) and locally, the subject's value in the judge (`f` is not run).
+#[track_caller]
+pub fn student<T: Serialize + DeserializeOwned>(f: impl FnOnce() -> T) -> T {
+    let site = site();
+    match mode() {
+        Mode::Direct => f(),
+        Mode::Subject(channel) => {
+            let value = f();
+            send(channel, &site, &value);
+            value
+        }
+        Mode::Judge(channel) => receive(channel, &site),
+    }
+}
+
+/// A decision only the judge can make (it holds the snapshots and the hidden
+/// answers): `f()` in the judge (sent to the subject) and locally; in the
+/// subject, the judge's answer (`f` is not run).
+#[track_caller]
+#[allow(dead_code, reason = "for the scene and hidden checks, judged next (issue 18)")]
+pub fn decide<T: Serialize + DeserializeOwned>(f: impl FnOnce() -> T) -> T {
+    let site = site();
+    match mode() {
+        Mode::Direct => f(),
+        Mode::Judge(channel) => {
+            let value = f();
+            send(channel, &site, &value);
+            value
+        }
+        Mode::Subject(channel) => receive(channel, &site),
+    }
+}
+
+#[track_caller]
+fn site() -> String {
+    let at = std::panic::Location::caller();
+    format!("{}:{}", at.file(), at.line())
+}
+
+fn send<T: Serialize>(channel: &Mutex<TcpStream>, site: &str, value: &T) {
+    let bytes = postcard::to_stdvec(value).expect("a check's values encode");
+    write_frame(channel, &Frame::Value { site: site.to_owned(), bytes });
+}
+
+fn write_frame(channel: &Mutex<TcpStream>, frame: &Frame) {
+    let bytes = postcard::to_stdvec(frame).expect("a frame encodes");
+    let Ok(mut stream) = channel.lock() else { std::process::exit(NO_VERDICT) };
+    let length = u32::try_from(bytes.len()).unwrap_or(u32::MAX).to_le_bytes();
+    // The other side gone: nothing left to do here.
+    if stream
+        .write_all(&length)
+        .and_then(|()| stream.write_all(&bytes))
+        .and_then(|()| stream.flush())
+        .is_err()
+    {
+        std::process::exit(NO_VERDICT);
+    }
+}
+
+fn read_frame(channel: &Mutex<TcpStream>) -> Result<Option<Frame>, String> {
+    let Ok(mut stream) = channel.lock() else { return Ok(None) };
+    let mut length = [0u8; 4];
+    if stream.read_exact(&mut length).is_err() {
+        return Ok(None);
+    }
+    let length = u32::from_le_bytes(length);
+    if length > MAX_FRAME {
+        return Err(format!("a frame of {length} bytes"));
+    }
+    let mut bytes = vec![0u8; length as usize];
+    if stream.read_exact(&mut bytes).is_err() {
+        return Ok(None);
+    }
+    postcard::from_bytes(&bytes).map(Some).map_err(|e| format!("an unreadable frame ({e})"))
+}
+
+/// The next value from the other process, for the call at `site`. In the
+/// judge, a panic the subject reported ends the check with that panic's
+/// outcome, and a value that does not fit ends it as failed.
+fn receive<T: DeserializeOwned>(channel: &Mutex<TcpStream>, site: &str) -> T {
+    let frame = match read_frame(channel) {
+        Ok(Some(frame)) => frame,
+        // The other side ended: the subject before the check did, or the judge with its verdict.
+        Ok(None) => std::process::exit(NO_VERDICT),
+        Err(e) => out_of_step(&e),
+    };
+    match frame {
+        Frame::Value { site: sent, bytes } if sent == site => {
+            postcard::from_bytes(&bytes).unwrap_or_else(|e| out_of_step(&format!("a value at {site} ({e})")))
+        }
+        Frame::Value { site: sent, .. } => out_of_step(&format!("a value from {sent} where {site} was due")),
+        Frame::Panic { message, file, line } => conclude(&Outcome::Panicked { message, file, line }),
+    }
+}
+
+/// Ends the judge with `outcome` as the verdict.
+fn conclude(outcome: &Outcome) -> ! {
+    if let Ok(json) = serde_json::to_string(outcome) {
+        let _ = print_verdict(&json);
+    }
+    std::process::exit(0)
+}
+
+/// The judge's verdict, a `verdict JSON` line on its stdout: a pipe only the
+/// driver reads (a file could be written by the student's process too).
+pub fn print_verdict(json: &str) -> Result<(), String> {
+    let mut out = std::io::stdout().lock();
+    writeln!(out, "{JUDGE_VERDICT}{json}").and_then(|()| out.flush()).map_err(|e| e.to_string())
+}
+
+/// Values that no honest subject sends: the check fails (never passes), saying so.
+fn out_of_step(what: &str) -> ! {
+    if !matches!(mode(), Mode::Judge(_)) {
+        std::process::exit(NO_VERDICT);
+    }
+    conclude(&Outcome::Failed(fail(
+        "the values your code returned, as the check's process reported them",
+        "one value of the expected type per call, in the check's order",
+        what,
+        "the process that ran your code sent what the check never sends: it ran something other than \
+         the check (an exit or a write of its own in your code?)",
+    )))
+}
+
+/// The subject's side: connects to the judge at `address` before any of the
+/// student's code runs, and reports a panic of the student's code to it.
+pub fn connect(address: &str) -> Result<(), String> {
+    let stream = TcpStream::connect(address).map_err(|e| format!("the judge at {address}: {e}"))?;
+    let _ = stream.set_nodelay(true);
+    MODE.set(Mode::Subject(Mutex::new(stream))).map_err(|_| "the mode is set twice".to_owned())
+}
+
+/// Tells the judge that the student's code panicked (the subject's panic hook).
+pub fn report_panic(message: &str, file: &str, line: u32) {
+    if let Mode::Subject(channel) = mode() {
+        write_frame(channel, &Frame::Panic { message: message.to_owned(), file: file.to_owned(), line });
+    }
+}
+
+/// The judge's side: listens on a loopback port, prints `listening ADDR` on
+/// stdout for the driver, and takes the first connection as the subject's.
+pub fn serve() -> Result<(), String> {
+    let listener = TcpListener::bind("127.0.0.1:0").map_err(|e| format!("a loopback port: {e}"))?;
+    let address = listener.local_addr().map_err(|e| e.to_string())?;
+    let mut out = std::io::stdout().lock();
+    writeln!(out, "{JUDGE_LISTENING}{address}").and_then(|()| out.flush()).map_err(|e| e.to_string())?;
+    let (stream, _) = listener.accept().map_err(|e| format!("the subject's connection: {e}"))?;
+    drop(listener);
+    let _ = stream.set_nodelay(true);
+    MODE.set(Mode::Judge(Mutex::new(stream))).map_err(|_| "the mode is set twice".to_owned())
+}
+
+/// Functions of a lecture crate, each wrapped so that its value goes through
+/// [`student`]: a lecture's checks import these instead of the crate's own,
+/// and their code reads as before.
+///
+/// ```ignore
+/// student_fns! { l02_ray_casting:
+///     fn hit_plane(ray: &Ray, normal: Vec3, offset: Float, range: Interval) -> Option<Hit>;
+/// }
+/// ```
+macro_rules! student_fns {
+    ($krate:ident: $(fn $name:ident($($arg:ident: $ty:ty),* $(,)?) -> $ret:ty;)+) => {
+        $(
+            #[doc = concat!("`", stringify!($krate), "::", stringify!($name), "`, its value taken through `judge::student`.")]
+            #[track_caller]
+            pub(super) fn $name($($arg: $ty),*) -> $ret {
+                crate::judge::student(|| $krate::$name($($arg),*))
+            }
+        )+
+    };
+}
+pub(crate) use student_fns;

@@ -1,0 +1,131 @@
+//! What the whole-workbench tests share: the instructor's grader, built once
+//! with the tests' precision, submissions patched from the reference, and the
+//! shared work folder they are graded in.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+use std::sync::{Mutex, OnceLock};
+
+use serde_json::Value;
+
+/// The work folder is shared: its tests take turns.
+pub static WORK: Mutex<()> = Mutex::new(());
+
+pub fn root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).parent().unwrap().to_owned()
+}
+
+pub fn scratch() -> PathBuf {
+    let dir = root().join("target/workbench");
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+/// `cargo run -p grader` in `dir` with the tests' precision; stdout, stderr, success.
+pub fn cargo(dir: &Path, args: &[&str], target: Option<&Path>) -> (String, String, bool) {
+    let mut command = Command::new(std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into()));
+    // The precision's feature goes to cargo, before a `--` that starts the program's arguments.
+    let split = args.iter().position(|a| *a == "--").unwrap_or(args.len());
+    command.current_dir(dir).args(&args[..split]);
+    if size_of::<raylab::Float>() == 8 {
+        command.args(["--features", "raylab/f64"]);
+    }
+    command.args(&args[split..]);
+    if let Some(target) = target {
+        command.env("CARGO_TARGET_DIR", target);
+    }
+    let out = command.output().expect("cargo runs");
+    (
+        String::from_utf8_lossy(&out.stdout).into(),
+        String::from_utf8_lossy(&out.stderr).into(),
+        out.status.success(),
+    )
+}
+
+/// The instructor's grader, built once with the tests' precision.
+pub fn grader_binary() -> &'static Path {
+    static BINARY: OnceLock<PathBuf> = OnceLock::new();
+    BINARY.get_or_init(|| {
+        let (stdout, stderr, ok) =
+            cargo(&root(), &["build", "-q", "-p", "grader", "--message-format", "json"], None);
+        assert!(ok, "the grader does not build:\n{stderr}");
+        stdout
+            .lines()
+            .filter_map(|line| serde_json::from_str::<Value>(line).ok())
+            .filter(|m| m["reason"] == "compiler-artifact" && m["target"]["name"] == "grader")
+            .find_map(|m| m["executable"].as_str().map(PathBuf::from))
+            .expect("cargo names the grader's executable")
+    })
+}
+
+/// Runs the instructor's grader with `args` and reads the JSON it writes to `json`.
+pub fn grader(args: &[&str], json: &Path) -> (Value, String) {
+    let _ = std::fs::remove_file(json);
+    let out = Command::new(grader_binary())
+        .current_dir(root())
+        .args(args)
+        .args(["--format", "json", "-o", json.to_str().unwrap()])
+        .output()
+        .expect("the grader runs");
+    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
+    let text =
+        std::fs::read_to_string(json).unwrap_or_else(|e| panic!("no JSON from the grader ({e}):\n{stderr}"));
+    (serde_json::from_str(&text).unwrap(), stderr)
+}
+
+pub fn checks(grade: &Value) -> &Vec<Value> {
+    grade["checks"].as_array().expect("a list of checks")
+}
+
+pub fn status_of<'a>(grade: &'a Value, id: &str) -> &'a Value {
+    checks(grade).iter().find(|c| c["info"]["id"] == id).unwrap_or_else(|| panic!("no check {id}"))
+}
+
+/// A submission folder with a copy of the reference's `lectures/*/src`, each
+/// `(file, find, replace)` applied (the find text must occur exactly once).
+pub fn submission(name: &str, patches: &[(&str, &str, &str)]) -> PathBuf {
+    let dir = scratch().join("submissions").join(name);
+    let _ = std::fs::remove_dir_all(&dir);
+    for lecture in std::fs::read_dir(root().join("lectures")).unwrap() {
+        let lecture = lecture.unwrap().path();
+        copy_tree(&lecture.join("src"), &dir.join("lectures").join(lecture.file_name().unwrap()).join("src"));
+    }
+    for (file, find, replace) in patches {
+        let path = dir.join(file);
+        let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{file}: {e}"));
+        assert_eq!(
+            text.matches(find).count(),
+            1,
+            "{file}: the patch's text must occur exactly once: {find:?}"
+        );
+        std::fs::write(&path, text.replacen(find, replace, 1)).unwrap();
+    }
+    dir
+}
+
+/// Copies a folder, leaving out build output (`target`, the built book) and git's.
+pub fn copy_tree(from: &Path, to: &Path) {
+    std::fs::create_dir_all(to).unwrap();
+    for entry in std::fs::read_dir(from).unwrap() {
+        let path = entry.unwrap().path();
+        let name = path.file_name().unwrap();
+        if name == "target" || name == ".git" || path.ends_with("book/book") {
+            continue;
+        }
+        let target = to.join(name);
+        if path.is_dir() {
+            copy_tree(&path, &target);
+        } else {
+            std::fs::copy(&path, &target).unwrap();
+        }
+    }
+}
+
+/// Grades `submission` in the shared work folder (hidden checks included).
+pub fn grade_submission(submission: &Path, select: &[&str], json_name: &str) -> (Value, String) {
+    let work = scratch().join("work");
+    let mut args =
+        vec!["grade", "--submission", submission.to_str().unwrap(), "--workdir", work.to_str().unwrap()];
+    args.extend_from_slice(select);
+    grader(&args, &scratch().join(json_name))
+}
