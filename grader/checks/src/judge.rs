@@ -67,19 +67,30 @@ fn mode() -> &'static Mode {
 const MAX_FRAME: u32 = 64 << 20;
 
 /// A value computed by the student's code: `f()` in the subject (sent to the
-/// judge) and locally, the subject's value in the judge (`f` is not run).
+/// judge) and locally, the subject's value in the judge (`f` is not run). A
+/// `student` call inside another's `f` (a proxy handed to the student's code,
+/// as `hit_transformed` takes the local shape's) is part of the outer value:
+/// it is not sent on its own.
 #[track_caller]
 pub fn student<T: Serialize + DeserializeOwned>(f: impl FnOnce() -> T) -> T {
     let site = site();
     match mode() {
         Mode::Direct => f(),
+        Mode::Subject(_) if INSIDE.get() => f(),
         Mode::Subject(channel) => {
+            INSIDE.set(true);
             let value = f();
+            INSIDE.set(false);
             send(channel, &site, &value);
             value
         }
         Mode::Judge(channel) => receive(channel, &site),
     }
+}
+
+thread_local! {
+    /// Whether this thread is inside a `student` call's `f` (the subject's).
+    static INSIDE: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
 }
 
 /// A decision only the judge can make (it holds the snapshots and the hidden

@@ -3,14 +3,54 @@
 #![allow(clippy::result_large_err)] // Failure is check.rs's report, returned by value as in every lecture
 #![allow(clippy::unnecessary_cast)] // widening Float to f64 for references is the identity in an f64 build
 
-pub(super) use l01_transforms::{
-    CameraError, OrthographicCamera, PerspectiveCamera, frame, is_basis, look_at, rotate_axis, rotate_x,
-    rotate_y, rotate_z, scale, screen_coords, transform_point, transform_vector, translate,
-};
+pub(super) use l01_transforms::{CameraError, OrthographicCamera, PerspectiveCamera};
 pub(super) use raylab::math::consts::{FRAC_PI_2, TAU};
 pub(super) use raylab::{Float, Mat4, Ray, Vec3, Vec4, radians};
 
 pub(super) use crate::check::{CheckResult, Failure, close3, ensure, fail, near3, num, vec3};
+
+// The student's functions, each value taken through `judge::student` (the lecture is `judged`).
+crate::judge::student_fns! { l01_transforms:
+    fn translate(t: Vec3) -> Mat4;
+    fn scale(s: Vec3) -> Mat4;
+    fn rotate_x(angle: Float) -> Mat4;
+    fn rotate_y(angle: Float) -> Mat4;
+    fn rotate_z(angle: Float) -> Mat4;
+    fn transform_point(m: &Mat4, p: Vec3) -> Vec3;
+    fn transform_vector(m: &Mat4, v: Vec3) -> Vec3;
+    fn rotate_axis(axis: Vec3, angle: Float) -> Mat4;
+    fn frame(origin: Vec3, i: Vec3, j: Vec3, k: Vec3) -> Mat4;
+    fn is_basis(i: Vec3, j: Vec3, k: Vec3) -> bool;
+    fn screen_coords(x: u32, y: u32, width: u32, height: u32) -> (Float, Float);
+}
+
+/// `l01_transforms::look_at`, through `judge::student` (its error as the variant's index: the
+/// lecture's type is not the kit's).
+#[track_caller]
+pub(super) fn look_at(eye: Vec3, at: Vec3, up: Vec3) -> Result<Mat4, CameraError> {
+    const ERRORS: [CameraError; 3] =
+        [CameraError::EyeAtTarget, CameraError::UpParallelToView, CameraError::NotFinite];
+    let got = crate::judge::student(|| {
+        l01_transforms::look_at(eye, at, up).map_err(|e| match e {
+            CameraError::EyeAtTarget => 0u8,
+            CameraError::UpParallelToView => 1,
+            CameraError::NotFinite => 2,
+        })
+    });
+    got.map_err(|e| ERRORS[usize::from(e.min(2))])
+}
+
+/// `PerspectiveCamera::generate_ray`, through `judge::student`.
+#[track_caller]
+pub(super) fn perspective_ray(camera: &PerspectiveCamera, sx: Float, sy: Float) -> Ray {
+    crate::judge::student(|| camera.generate_ray(sx, sy))
+}
+
+/// `OrthographicCamera::generate_ray`, through `judge::student`.
+#[track_caller]
+pub(super) fn orthographic_ray(camera: &OrthographicCamera, sx: Float, sy: Float) -> Ray {
+    crate::judge::student(|| camera.generate_ray(sx, sy))
+}
 
 pub(super) type VecToMat = fn(Vec3) -> Mat4;
 pub(super) type AngleToMat = fn(Float) -> Mat4;

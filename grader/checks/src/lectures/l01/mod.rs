@@ -8,7 +8,7 @@ use crate::check::Meta;
 const CAMERA_NEEDS: &[&str] = &["01/transform_point", "01/transform_vector"];
 
 declare_checks! {
-    "l01";
+    "l01", judged;
     Meta::unit("translate", "translate(t): the origin goes to t (the last column), the axes stay")
         => translate_cases(translate),
     Meta::unit("scale", "scale(s) is diag(sₓ, s_y, s_z, 1): the origin stays, w stays 1")
@@ -53,12 +53,12 @@ declare_checks! {
         "directions (sx·aspect·tan(fovy/2), sy·tan(fovy/2), −1) taken to the world and normalised, from the \
             eye",
     )
-    .needs(CAMERA_NEEDS) => perspective_cases(PerspectiveCamera::generate_ray),
+    .needs(CAMERA_NEEDS) => perspective_cases(perspective_ray),
     Meta::unit(
         "OrthographicCamera::generate_ray",
         "origins (sx·aspect·h/2, sy·h/2, 0) taken to the world as points, one direction −w for every ray",
     )
-    .needs(CAMERA_NEEDS) => orthographic_cases(OrthographicCamera::generate_ray),
+    .needs(CAMERA_NEEDS) => orthographic_cases(orthographic_ray),
 }
 
 #[cfg(feature = "l01")]

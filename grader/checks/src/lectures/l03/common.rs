@@ -4,11 +4,7 @@
 #![allow(clippy::result_large_err)] // Failure is check.rs's report, returned by value as in every lecture
 #![allow(clippy::unnecessary_cast)] // widening Float to f64 for references is the identity in an f64 build
 
-pub(super) use l03_polygons_triangles::{
-    TriangleHit, edge_function, hit_box, hit_mesh, hit_polygon, hit_slabs, hit_triangle, hit_triangle_cramer,
-    hit_triangle_moller_trumbore, hit_triangle_watertight, inside_crossings, interpolate_normal,
-    newell_normal, winding_number,
-};
+pub(super) use l03_polygons_triangles::TriangleHit;
 pub(super) use raylab::math::consts::PI;
 pub(super) use raylab::random::Rng;
 pub(super) use raylab::scene::Mesh;
@@ -19,6 +15,67 @@ pub(super) use crate::check::{
     vec3,
 };
 pub(super) use raylab_testing::exact::exact_hits;
+
+// The student's functions, each value taken through `judge::student` (the lecture is `judged`).
+crate::judge::student_fns! { l03_polygons_triangles:
+    fn hit_slabs(ray: &Ray, min: Vec3, max: Vec3, range: Interval) -> Option<(Float, Float)>;
+    fn hit_box(ray: &Ray, min: Vec3, max: Vec3, range: Interval) -> Option<Hit>;
+    fn inside_crossings(polygon: &[Vec2], p: Vec2) -> bool;
+    fn winding_number(polygon: &[Vec2], p: Vec2) -> i32;
+    fn newell_normal(vertices: &[Vec3]) -> Vec3;
+    fn hit_polygon(ray: &Ray, vertices: &[Vec3], range: Interval) -> Option<Hit>;
+    fn edge_function(p: Vec3, q: Vec3) -> Float;
+    fn interpolate_normal(normals: &[Vec3; 3], beta: Float, gamma: Float) -> Vec3;
+    fn hit_triangle(ray: &Ray, vertices: &[Vec3; 3], normals: Option<&[Vec3; 3]>, range: Interval) -> Option<Hit>;
+    fn hit_mesh(ray: &Ray, mesh: &Mesh, range: Interval) -> Option<Hit>;
+}
+
+/// A triangle hit of the student's, taken through `judge::student` field by field (the
+/// lecture's type is not the kit's).
+#[track_caller]
+fn triangle_hit(hit: impl FnOnce() -> Option<TriangleHit>) -> Option<TriangleHit> {
+    crate::judge::student(|| hit().map(|h| (h.t, h.beta, h.gamma))).map(|(t, beta, gamma)| TriangleHit {
+        t,
+        beta,
+        gamma,
+    })
+}
+
+/// `l03_polygons_triangles::hit_triangle_cramer`, through `judge::student`.
+#[track_caller]
+pub(super) fn hit_triangle_cramer(
+    ray: &Ray,
+    a: Vec3,
+    b: Vec3,
+    c: Vec3,
+    range: Interval,
+) -> Option<TriangleHit> {
+    triangle_hit(|| l03_polygons_triangles::hit_triangle_cramer(ray, a, b, c, range))
+}
+
+/// `l03_polygons_triangles::hit_triangle_moller_trumbore`, through `judge::student`.
+#[track_caller]
+pub(super) fn hit_triangle_moller_trumbore(
+    ray: &Ray,
+    a: Vec3,
+    b: Vec3,
+    c: Vec3,
+    range: Interval,
+) -> Option<TriangleHit> {
+    triangle_hit(|| l03_polygons_triangles::hit_triangle_moller_trumbore(ray, a, b, c, range))
+}
+
+/// `l03_polygons_triangles::hit_triangle_watertight`, through `judge::student`.
+#[track_caller]
+pub(super) fn hit_triangle_watertight(
+    ray: &Ray,
+    a: Vec3,
+    b: Vec3,
+    c: Vec3,
+    range: Interval,
+) -> Option<TriangleHit> {
+    triangle_hit(|| l03_polygons_triangles::hit_triangle_watertight(ray, a, b, c, range))
+}
 
 pub(super) type SlabsFn = fn(&Ray, Vec3, Vec3, Interval) -> Option<(Float, Float)>;
 pub(super) type BoxFn = fn(&Ray, Vec3, Vec3, Interval) -> Option<Hit>;

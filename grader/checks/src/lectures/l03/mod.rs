@@ -4,7 +4,7 @@
 use crate::check::Meta;
 
 declare_checks! {
-    "l03";
+    "l03", judged;
     Meta::unit(
         "hit_slabs",
         "the span inside a box: generic rays both ways, from inside, misses, an edge touch",

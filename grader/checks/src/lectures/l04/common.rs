@@ -3,10 +3,6 @@
 #![allow(clippy::result_large_err)] // Failure is check.rs's report, returned by value as in every lecture
 #![allow(clippy::unnecessary_cast)] // widening Float to f64 for references is the identity in an f64 build
 
-pub(super) use l04_quadrics_transforms::{
-    first_crossing, hit_cone, hit_cylinder, hit_transformed, normal_to_world, parametric_normal,
-    ray_to_object, slab_z_span,
-};
 pub(super) use raylab::math::consts::{FRAC_PI_6, TAU};
 pub(super) use raylab::random::Rng;
 pub(super) use raylab::scene::Transform;
@@ -16,6 +12,18 @@ pub(super) use crate::check::{
     CheckResult, Failure, close, close3, ensure, fail, maybe, near3, num, ray, show_hit, show_ray, show_span,
     vec3,
 };
+
+// The student's functions, each value taken through `judge::student` (the lecture is `judged`).
+crate::judge::student_fns! { l04_quadrics_transforms:
+    fn slab_z_span(o_z: Float, d_z: Float) -> Option<(Float, Float)>;
+    fn first_crossing(side: (Float, Float), caps: (Float, Float), range: Interval) -> Option<(Float, bool)>;
+    fn hit_cone(ray: &Ray, range: Interval) -> Option<Hit>;
+    fn hit_cylinder(ray: &Ray, range: Interval) -> Option<Hit>;
+    fn parametric_normal(ds_dalpha: Vec3, ds_dbeta: Vec3) -> Vec3;
+    fn ray_to_object(ray: &Ray, object_from_world: &Mat4) -> Ray;
+    fn normal_to_world(n: Vec3, object_from_world: &Mat4) -> Vec3;
+    fn hit_transformed(ray: &Ray, transform: &Transform, range: Interval, hit_local: ShapeFn) -> Option<Hit>;
+}
 
 pub(super) type SpanFn = fn(Float, Float) -> Option<(Float, Float)>;
 pub(super) type CrossingFn = fn((Float, Float), (Float, Float), Interval) -> Option<(Float, bool)>;

@@ -6,7 +6,7 @@ use crate::check::Meta;
 const CAPPED_NEEDS: &[&str] = &["04/slab_z_span", "04/first_crossing"];
 
 declare_checks! {
-    "l04";
+    "l04", judged;
     Meta::unit("slab_z_span", "the span of t in 0 ≤ z ≤ 1, ordered, and parallel rays inside or outside")
         => span_cases(slab_z_span),
     Meta::unit(

@@ -3,14 +3,48 @@
 // `Failure` is large (its optional images); see check.rs.
 #![allow(clippy::result_large_err)]
 
-pub(super) use l05_shading::{
-    LightSample, blinn_specular, concentric_disk, distance_falloff, illuminate, lambert, phong_specular,
-    reflect, sample_light, shade_light, shade_local, spot_falloff,
-};
+pub(super) use l05_shading::LightSample;
 pub(super) use raylab::scene::{Attenuation, Light, LightKind, Material, Specular};
 pub(super) use raylab::{BLACK, Color, Float, Hit, Ray, Vec2, Vec3, WHITE, radians};
 
 pub(super) use crate::check::{CheckResult, close, close3, ensure, num, v, vec3};
+
+// The student's functions, each value taken through `judge::student` (the lecture is `judged`).
+crate::judge::student_fns! { l05_shading:
+    fn concentric_disk(u: Vec2) -> Vec2;
+    fn lambert(n: Vec3, l: Vec3) -> Float;
+    fn distance_falloff(attenuation: Attenuation, distance: Float) -> Float;
+    fn spot_falloff(cos_angle: Float, inner: Float, outer: Float) -> Float;
+    fn phong_specular(n: Vec3, l: Vec3, v: Vec3, exponent: Float) -> Float;
+    fn blinn_specular(n: Vec3, l: Vec3, v: Vec3, exponent: Float) -> Float;
+    fn reflect(v: Vec3, n: Vec3) -> Vec3;
+    fn shade_light(material: &Material, diffuse: Color, n: Vec3, v: Vec3, sample: &LightSample) -> Color;
+    fn shade_local(material: &Material, diffuse: Color, hit: &Hit, v: Vec3, lights: &[Light], ambient: Color)
+        -> Color;
+}
+
+/// A light sample of the student's, taken through `judge::student` field by field (the
+/// lecture's type is not the kit's).
+#[track_caller]
+fn sampled(sample: impl FnOnce() -> LightSample) -> LightSample {
+    let (direction, distance, intensity) = crate::judge::student(|| {
+        let s = sample();
+        (s.direction, s.distance, s.intensity)
+    });
+    LightSample { direction, distance, intensity }
+}
+
+/// `l05_shading::illuminate`, through `judge::student`.
+#[track_caller]
+pub(super) fn illuminate(light: &Light, point: Vec3) -> LightSample {
+    sampled(|| l05_shading::illuminate(light, point))
+}
+
+/// `l05_shading::sample_light`, through `judge::student`.
+#[track_caller]
+pub(super) fn sample_light(light: &Light, point: Vec3, u: Vec2) -> LightSample {
+    sampled(|| l05_shading::sample_light(light, point, u))
+}
 
 pub(super) type DiskFn = fn(Vec2) -> Vec2;
 pub(super) type SampleFn = fn(&Light, Vec3, Vec2) -> LightSample;

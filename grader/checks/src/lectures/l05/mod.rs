@@ -5,7 +5,7 @@
 use crate::check::Meta;
 
 declare_checks! {
-    "l05";
+    "l05", judged;
     Meta::unit(
         "concentric_disk",
         "square rings go to circles of the same half side, the centre and the sides by hand, both branches",

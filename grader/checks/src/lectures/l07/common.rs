@@ -3,10 +3,7 @@
 // `Failure` is large (its optional images); see check.rs.
 #![allow(clippy::result_large_err)]
 
-pub(super) use l02_ray_casting::hit_sphere_stable;
-pub(super) use l07_reflection_refraction::{
-    Interface, fresnel_dielectric, interface, mirror_direction, refract, schlick,
-};
+pub(super) use l07_reflection_refraction::Interface;
 pub(super) use raylab::{Float, Hit, Interval, Ray, Vec3};
 
 pub(super) use crate::check::{CheckResult, close, close3, ensure, fail, maybe, num, v, vec3, wide, wide3};
@@ -32,4 +29,26 @@ pub(super) fn incoming(degrees: f64) -> Vec3 {
 
 pub(super) fn show(t: &Option<Vec3>) -> String {
     maybe(t, |t| vec3(*t)).replace("no hit", "total internal reflection")
+}
+
+// The student's functions, each value taken through `judge::student` (the lecture is `judged`).
+crate::judge::student_fns! { l07_reflection_refraction:
+    fn schlick(cos_i: Float, eta_i: Float, eta_t: Float) -> Float;
+    fn fresnel_dielectric(cos_i: Float, eta_i: Float, eta_t: Float) -> Float;
+    fn mirror_direction(dir: Vec3, n: Vec3) -> Vec3;
+    fn refract(i: Vec3, n: Vec3, eta_ratio: Float) -> Option<Vec3>;
+}
+crate::judge::student_fns! { l02_ray_casting:
+    fn hit_sphere_stable(ray: &Ray, center: Vec3, radius: Float, range: Interval) -> Option<Hit>;
+}
+
+/// `l07_reflection_refraction::interface`, its value taken through `judge::student` (field by
+/// field: the lecture's type is not the kit's).
+#[track_caller]
+pub(super) fn interface(hit: &Hit, ior: Float) -> Interface {
+    let (normal, eta_i, eta_t, entering) = crate::judge::student(|| {
+        let i = l07_reflection_refraction::interface(hit, ior);
+        (i.normal, i.eta_i, i.eta_t, i.entering)
+    });
+    Interface { normal, eta_i, eta_t, entering }
 }

@@ -4,7 +4,7 @@
 use crate::check::Meta;
 
 declare_checks! {
-    "l07";
+    "l07", judged;
     Meta::unit(
         "schlick",
         "R₀ at normal incidence, (1 − cos θ)⁵ from air, cos θ_t from inside glass, R = 1 under TIR",
