@@ -13,7 +13,7 @@ use crate::math::{Float, Vec3, consts};
 
 /// SplitMix64: the state advances by the golden-ratio constant 0x9E3779B97F4A7C15
 /// and each output is the state scrambled by two xor-shift-multiply rounds.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub struct Rng {
     state: u64,
 }

@@ -45,7 +45,7 @@ impl Counter {
 }
 
 /// A set of counts, one per [`Counter`].
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub struct RayStats {
     pub counts: [u64; 5],
 }

@@ -8,16 +8,36 @@ pub(super) use std::collections::HashSet;
 pub(super) use l01_transforms::Camera;
 pub(super) use l04_quadrics_transforms::BruteForce;
 pub(super) use l08_ray_tree::{TraceSettings, World};
-pub(super) use l10_textures_sampling::{
-    Filter, Pattern, bilinear, checker, checker_3d, filter_weight, plane_uv, render_supersampled,
-    sample_offsets, sphere_uv, triangle_uv,
-};
+pub(super) use l10_textures_sampling::{Filter, Pattern, render_supersampled};
 pub(super) use raylab::math::consts::{PI, TAU};
 pub(super) use raylab::random::Rng;
 pub(super) use raylab::stats::{Counter, RayStats};
 pub(super) use raylab::{Color, Float, Image, Scene, Vec2, Vec3};
 
 pub(super) use crate::check::{CheckResult, Failure, ensure, fail, num, vec3};
+
+// The student's functions, each value taken through `judge::student` (the lecture is `judged`).
+crate::judge::student_fns! { l10_textures_sampling:
+    fn sphere_uv(p: Vec3) -> Vec2;
+    fn plane_uv(p: Vec3, origin: Vec3, u_axis: Vec3, v_axis: Vec3) -> Vec2;
+    fn triangle_uv(uvs: &[Vec2; 3], beta: Float, gamma: Float) -> Vec2;
+    fn checker(uv: Vec2, scale: Float, a: Color, b: Color) -> Color;
+    fn checker_3d(p: Vec3, scale: Float, a: Color, b: Color) -> Color;
+    fn bilinear(image: &Image, uv: Vec2) -> Color;
+    fn filter_weight(filter: Filter, offset: Vec2) -> Float;
+}
+
+/// `l10_textures_sampling::sample_offsets`, through `judge::student`: the offsets and the
+/// generator as the student's code left it (the check draws from it next).
+#[track_caller]
+pub(super) fn sample_offsets(pattern: Pattern, n: u32, rng: &mut Rng) -> Vec<Vec2> {
+    let (offsets, after) = crate::judge::student(|| {
+        let offsets = l10_textures_sampling::sample_offsets(pattern, n, rng);
+        (offsets, rng.clone())
+    });
+    *rng = after;
+    offsets
+}
 
 pub(super) type SphereUvFn = fn(Vec3) -> Vec2;
 pub(super) type PlaneUvFn = fn(Vec3, Vec3, Vec3, Vec3) -> Vec2;

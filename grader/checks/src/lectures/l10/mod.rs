@@ -4,7 +4,7 @@
 use crate::check::Meta;
 
 declare_checks! {
-    "l10";
+    "l10", judged;
     Meta::unit(
         "sphere_uv",
         "poles, the equator's axis points, the inverse of longitude and latitude, points off the sphere",

@@ -24,11 +24,14 @@ pub(super) fn rendered(
     filter: Filter,
     seed: u64,
 ) -> (Image, RayStats) {
-    let camera =
-        Camera::from_scene(&s.camera, s.width, s.height).expect("the check scenes have valid cameras");
-    let objects = BruteForce::new(&s.objects);
-    let world = World::new(s, &objects);
-    render(&world, &camera, s.width, s.height, &TraceSettings::default(), spp, pattern, filter, seed)
+    // The camera (01's look_at) and the render: the student's code, one value.
+    crate::judge::student(|| {
+        let camera =
+            Camera::from_scene(&s.camera, s.width, s.height).expect("the check scenes have valid cameras");
+        let objects = BruteForce::new(&s.objects);
+        let world = World::new(s, &objects);
+        render(&world, &camera, s.width, s.height, &TraceSettings::default(), spp, pattern, filter, seed)
+    })
 }
 
 /// The value a pixel of [`half_plane`] takes with the k × k regular samples and `filter`,
@@ -59,10 +62,13 @@ pub(super) fn expected_coverage(k: u32, filter: Filter, r: f64, slope: f64, inte
 pub(super) fn supersampling_cases(render: SupersampleFn) -> CheckResult {
     // One regular sample: the pixel centre (d = 0), weight 1: 08's render bit for bit.
     let s = spheres();
-    let camera = Camera::from_scene(&s.camera, s.width, s.height).expect("a valid camera");
-    let objects = BruteForce::new(&s.objects);
-    let world = World::new(&s, &objects);
-    let (expected, _) = l08_ray_tree::render(&world, &camera, s.width, s.height, &TraceSettings::default());
+    // Lecture 08's picture, the student's too.
+    let expected = crate::judge::student(|| {
+        let camera = Camera::from_scene(&s.camera, s.width, s.height).expect("a valid camera");
+        let objects = BruteForce::new(&s.objects);
+        let world = World::new(&s, &objects);
+        l08_ray_tree::render(&world, &camera, s.width, s.height, &TraceSettings::default()).0
+    });
     for filter in [Filter::Box, Filter::Tent] {
         let (image, stats) = rendered(render, &s, 1, Pattern::Regular, filter, 5);
         let case = format!("two spheres over a floor, 12 × 8, 1 regular sample per pixel, {filter:?} filter");
