@@ -25,7 +25,7 @@
 //! reports from how the subject ended. What the student's process can send
 //! is what the student's code could return: values, never a verdict.
 
-use std::io::{Read, Write};
+use std::io::{BufReader, BufWriter, Read, Write};
 use std::net::{TcpListener, TcpStream};
 use std::sync::{Mutex, OnceLock};
 
@@ -52,9 +52,29 @@ enum Mode {
     /// One process runs the student's code and judges it: local grading.
     Direct,
     /// Runs the student's code and reports its values.
-    Subject(Mutex<TcpStream>),
+    Subject(Channel),
     /// Judges from the values reported.
-    Judge(Mutex<TcpStream>),
+    Judge(Channel),
+}
+
+/// The connection to the other process, buffered both ways: a check may send
+/// tens of thousands of small values (the leak test's rays), so the subject
+/// writes them out in blocks, and flushes before it waits for a decision and
+/// when the check ends (`flush`) or panics.
+struct Channel {
+    out: Mutex<BufWriter<TcpStream>>,
+    input: Mutex<BufReader<TcpStream>>,
+}
+
+impl Channel {
+    fn new(stream: TcpStream) -> Result<Self, String> {
+        let _ = stream.set_nodelay(true);
+        let reader = stream.try_clone().map_err(|e| format!("the channel: {e}"))?;
+        Ok(Self {
+            out: Mutex::new(BufWriter::with_capacity(1 << 16, stream)),
+            input: Mutex::new(BufReader::with_capacity(1 << 16, reader)),
+        })
+    }
 }
 
 static MODE: OnceLock<Mode> = OnceLock::new();
@@ -117,28 +137,37 @@ fn site() -> String {
     format!("{}:{}", at.file(), at.line())
 }
 
-fn send<T: Serialize>(channel: &Mutex<TcpStream>, site: &str, value: &T) {
+/// Sends a value; a decision (the judge's) goes out at once, the subject's values in blocks.
+fn send<T: Serialize>(channel: &Channel, site: &str, value: &T) {
     let bytes = postcard::to_stdvec(value).expect("a check's values encode");
-    write_frame(channel, &Frame::Value { site: site.to_owned(), bytes });
+    let now = matches!(mode(), Mode::Judge(_));
+    write_frame(channel, &Frame::Value { site: site.to_owned(), bytes }, now);
 }
 
-fn write_frame(channel: &Mutex<TcpStream>, frame: &Frame) {
+fn write_frame(channel: &Channel, frame: &Frame, flush: bool) {
     let bytes = postcard::to_stdvec(frame).expect("a frame encodes");
-    let Ok(mut stream) = channel.lock() else { std::process::exit(NO_VERDICT) };
+    let Ok(mut stream) = channel.out.lock() else { std::process::exit(NO_VERDICT) };
     let length = u32::try_from(bytes.len()).unwrap_or(u32::MAX).to_le_bytes();
+    let written = stream.write_all(&length).and_then(|()| stream.write_all(&bytes));
     // The other side gone: nothing left to do here.
-    if stream
-        .write_all(&length)
-        .and_then(|()| stream.write_all(&bytes))
-        .and_then(|()| stream.flush())
-        .is_err()
-    {
+    if written.and_then(|()| if flush { stream.flush() } else { Ok(()) }).is_err() {
         std::process::exit(NO_VERDICT);
     }
 }
 
-fn read_frame(channel: &Mutex<TcpStream>) -> Result<Option<Frame>, String> {
-    let Ok(mut stream) = channel.lock() else { return Ok(None) };
+/// Sends what the subject has buffered: before it waits, and when its check ends.
+pub fn flush() {
+    if let Mode::Subject(channel) = mode()
+        && let Ok(mut stream) = channel.out.lock()
+    {
+        let _ = stream.flush();
+    }
+}
+
+fn read_frame(channel: &Channel) -> Result<Option<Frame>, String> {
+    // A subject about to wait for a decision sends what it has first.
+    flush();
+    let Ok(mut stream) = channel.input.lock() else { return Ok(None) };
     let mut length = [0u8; 4];
     if stream.read_exact(&mut length).is_err() {
         return Ok(None);
@@ -157,7 +186,7 @@ fn read_frame(channel: &Mutex<TcpStream>) -> Result<Option<Frame>, String> {
 /// The next value from the other process, for the call at `site`. In the
 /// judge, a panic the subject reported ends the check with that panic's
 /// outcome, and a value that does not fit ends it as failed.
-fn receive<T: DeserializeOwned>(channel: &Mutex<TcpStream>, site: &str) -> T {
+fn receive<T: DeserializeOwned>(channel: &Channel, site: &str) -> T {
     let frame = match read_frame(channel) {
         Ok(Some(frame)) => frame,
         // The other side ended: the subject before the check did, or the judge with its verdict.
@@ -206,14 +235,17 @@ fn out_of_step(what: &str) -> ! {
 /// student's code runs, and reports a panic of the student's code to it.
 pub fn connect(address: &str) -> Result<(), String> {
     let stream = TcpStream::connect(address).map_err(|e| format!("the judge at {address}: {e}"))?;
-    let _ = stream.set_nodelay(true);
-    MODE.set(Mode::Subject(Mutex::new(stream))).map_err(|_| "the mode is set twice".to_owned())
+    MODE.set(Mode::Subject(Channel::new(stream)?)).map_err(|_| "the mode is set twice".to_owned())
 }
 
 /// Tells the judge that the student's code panicked (the subject's panic hook).
 pub fn report_panic(message: &str, file: &str, line: u32) {
     if let Mode::Subject(channel) = mode() {
-        write_frame(channel, &Frame::Panic { message: message.to_owned(), file: file.to_owned(), line });
+        write_frame(
+            channel,
+            &Frame::Panic { message: message.to_owned(), file: file.to_owned(), line },
+            true,
+        );
     }
 }
 
@@ -226,8 +258,7 @@ pub fn serve() -> Result<(), String> {
     writeln!(out, "{JUDGE_LISTENING}{address}").and_then(|()| out.flush()).map_err(|e| e.to_string())?;
     let (stream, _) = listener.accept().map_err(|e| format!("the subject's connection: {e}"))?;
     drop(listener);
-    let _ = stream.set_nodelay(true);
-    MODE.set(Mode::Judge(Mutex::new(stream))).map_err(|_| "the mode is set twice".to_owned())
+    MODE.set(Mode::Judge(Channel::new(stream)?)).map_err(|_| "the mode is set twice".to_owned())
 }
 
 /// Functions of a lecture crate, each wrapped so that its value goes through

@@ -151,7 +151,11 @@ impl VerdictTo {
                 std::fs::write(file, json).map_err(|e| format!("{}: {e}", file.display()))
             }
             VerdictTo::Stdout => judge::print_verdict(&json),
-            VerdictTo::Judge => Ok(()),
+            // The subject's last values, sent: the judge writes the verdict.
+            VerdictTo::Judge => {
+                judge::flush();
+                Ok(())
+            }
         }
     }
 }
