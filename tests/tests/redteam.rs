@@ -4,9 +4,11 @@
 //! plain verdict ("failed" or "crashed", never "passed"), and leave every
 //! other check's verdict as the reference's.
 //!
-//! Lecture 02's unit checks are judged (`grader/checks/src/judge.rs`): the
+//! The attacks sit in lecture 02, whose unit checks are judged
+//! (`grader/checks/src/judge.rs`, as are lectures 01–05, 07 and 10's): the
 //! process that runs the student's code reports values and never a verdict.
-//! The scene checks and the other lectures are not judged yet (issue 18).
+//! The scene checks, the hidden checks and lectures 06, 08 and 09 are not
+//! judged yet (issue 18).
 
 mod support;
 
