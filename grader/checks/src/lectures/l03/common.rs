@@ -41,41 +41,19 @@ fn triangle_hit(hit: impl FnOnce() -> Option<TriangleHit>) -> Option<TriangleHit
     })
 }
 
-/// `l03_polygons_triangles::hit_triangle_cramer`, through `judge::student`.
-#[track_caller]
-pub(super) fn hit_triangle_cramer(
-    ray: &Ray,
-    a: Vec3,
-    b: Vec3,
-    c: Vec3,
-    range: Interval,
-) -> Option<TriangleHit> {
-    triangle_hit(|| l03_polygons_triangles::hit_triangle_cramer(ray, a, b, c, range))
+/// The three triangle tests of lecture 03, each through [`triangle_hit`].
+macro_rules! triangle_fns {
+    ($($name:ident),+) => {
+        $(
+            #[doc = concat!("`l03_polygons_triangles::", stringify!($name), "`, through `judge::student`.")]
+            #[track_caller]
+            pub(super) fn $name(ray: &Ray, a: Vec3, b: Vec3, c: Vec3, range: Interval) -> Option<TriangleHit> {
+                triangle_hit(|| l03_polygons_triangles::$name(ray, a, b, c, range))
+            }
+        )+
+    };
 }
-
-/// `l03_polygons_triangles::hit_triangle_moller_trumbore`, through `judge::student`.
-#[track_caller]
-pub(super) fn hit_triangle_moller_trumbore(
-    ray: &Ray,
-    a: Vec3,
-    b: Vec3,
-    c: Vec3,
-    range: Interval,
-) -> Option<TriangleHit> {
-    triangle_hit(|| l03_polygons_triangles::hit_triangle_moller_trumbore(ray, a, b, c, range))
-}
-
-/// `l03_polygons_triangles::hit_triangle_watertight`, through `judge::student`.
-#[track_caller]
-pub(super) fn hit_triangle_watertight(
-    ray: &Ray,
-    a: Vec3,
-    b: Vec3,
-    c: Vec3,
-    range: Interval,
-) -> Option<TriangleHit> {
-    triangle_hit(|| l03_polygons_triangles::hit_triangle_watertight(ray, a, b, c, range))
-}
+triangle_fns!(hit_triangle_cramer, hit_triangle_moller_trumbore, hit_triangle_watertight);
 
 pub(super) type SlabsFn = fn(&Ray, Vec3, Vec3, Interval) -> Option<(Float, Float)>;
 pub(super) type BoxFn = fn(&Ray, Vec3, Vec3, Interval) -> Option<Hit>;
