@@ -27,6 +27,7 @@
 
 use std::io::{BufReader, BufWriter, Read, Write};
 use std::net::{TcpListener, TcpStream};
+use std::panic::Location;
 use std::sync::{Mutex, OnceLock};
 
 use serde::de::DeserializeOwned;
@@ -93,7 +94,8 @@ const MAX_FRAME: u32 = 64 << 20;
 /// it is not sent on its own.
 #[track_caller]
 pub fn student<T: Serialize + DeserializeOwned>(f: impl FnOnce() -> T) -> T {
-    let site = site();
+    // The call site is named only where a value crosses: local grading pays nothing.
+    let at = Location::caller();
     match mode() {
         Mode::Direct => f(),
         Mode::Subject(_) if INSIDE.get() => f(),
@@ -101,10 +103,10 @@ pub fn student<T: Serialize + DeserializeOwned>(f: impl FnOnce() -> T) -> T {
             INSIDE.set(true);
             let value = f();
             INSIDE.set(false);
-            send(channel, &site, &value);
+            send(channel, &site(at), &value);
             value
         }
-        Mode::Judge(channel) => receive(channel, &site),
+        Mode::Judge(channel) => receive(channel, &site(at)),
     }
 }
 
@@ -119,21 +121,20 @@ thread_local! {
 #[track_caller]
 #[allow(dead_code, reason = "for the scene and hidden checks, judged next (issue 18)")]
 pub fn decide<T: Serialize + DeserializeOwned>(f: impl FnOnce() -> T) -> T {
-    let site = site();
+    let at = Location::caller();
     match mode() {
         Mode::Direct => f(),
         Mode::Judge(channel) => {
             let value = f();
-            send(channel, &site, &value);
+            send(channel, &site(at), &value);
             value
         }
-        Mode::Subject(channel) => receive(channel, &site),
+        Mode::Subject(channel) => receive(channel, &site(at)),
     }
 }
 
-#[track_caller]
-fn site() -> String {
-    let at = std::panic::Location::caller();
+/// `file:line` of a call, as the frames name it.
+fn site(at: &Location) -> String {
     format!("{}:{}", at.file(), at.line())
 }
 
