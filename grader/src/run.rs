@@ -45,7 +45,8 @@ pub fn run_check(
     out: &Path,
     timeout: Duration,
 ) -> Result<Ran, String> {
-    let verdict = verdict_file(scratch, id);
+    let verdict = scratch.join(format!("{}.json", id.replace(['/', ':'], "_")));
+    let _ = std::fs::remove_file(&verdict);
     let mut args: Vec<OsString> = vec!["run".into(), id.into(), "--verdict".into(), verdict.clone().into()];
     args.extend(["--out".into(), out.into()]);
     let mut ran = run_process(binary, id, &args, timeout)?;
@@ -134,12 +135,6 @@ pub fn run_judged(
         Some(status) => Err(format!("the judge of {id} failed ({status}): {}", errors.trim())),
         None => Err(format!("the judge of {id} took longer than {} s", JUDGE_GRACE.as_secs())),
     }
-}
-
-fn verdict_file(scratch: &Path, id: &str) -> PathBuf {
-    let verdict = scratch.join(format!("{}.json", id.replace(['/', ':'], "_")));
-    let _ = std::fs::remove_file(&verdict);
-    verdict
 }
 
 /// Runs `binary ARGS` (one check, `id`) with a time limit and a cap on its output.
