@@ -55,6 +55,8 @@ pub struct BuildOptions {
     pub target_dir: Option<PathBuf>,
     /// Print cargo's progress lines ("Compiling l05-shading") to stderr.
     pub show_progress: bool,
+    /// Build as this user: the student's code (a build compiles its `include_bytes!`).
+    pub run_as: Option<crate::platform::RunAs>,
 }
 
 /// Builds `raylab-checks` in `ws` with as many of the wanted lectures as compile.
@@ -65,23 +67,23 @@ pub fn build(ws: &Workspace, options: &BuildOptions) -> Result<Built, String> {
     // Each round sets aside at least one lecture, so there are at most as many rounds as lectures.
     for _ in 0..=ws.lectures.len() {
         let attempt = cargo_build(ws, options, &wanted)?;
-        let Some(errors) = attempt.errors else {
+        let Some(errors) = &attempt.errors else {
             let binary = attempt.binary.ok_or("cargo built the checks but named no executable")?;
             return Ok(Built { binary, lectures: wanted, failed, waiting });
         };
-        let mut blamed = blame(ws, &errors);
+        let mut blamed = blame(ws, errors);
         blamed.retain(|lecture, _| wanted.contains(lecture));
         if blamed.is_empty() {
             // An error no lecture explains (the tracer or the image checks, which use every lecture):
             // set aside the last lecture still wanted, which they need, and try again.
             let Some(last) = wanted.iter().next_back().cloned() else {
-                let first = errors.first().map_or_else(String::new, |e| e.error.rendered.clone());
-                return Err(format!("the checks do not compile even without any lecture:\n{first}"));
+                let said = errors.first().map_or_else(|| attempt.unlocated(), |e| e.error.rendered.clone());
+                return Err(format!("the checks do not compile even without any lecture:\n{said}"));
             };
             let error = errors.first().map(|e| e.error.clone()).unwrap_or_else(|| CompileError {
                 location: String::new(),
-                message: "cargo failed without a compiler error".into(),
-                rendered: attempt.stderr.clone(),
+                message: "cargo failed without a compiler error that names a file".into(),
+                rendered: attempt.unlocated(),
                 in_checks: true,
             });
             blamed.insert(last, error);
@@ -133,7 +135,31 @@ struct Attempt {
     binary: Option<PathBuf>,
     /// `None` when the build succeeded.
     errors: Option<Vec<Located>>,
+    /// The compiler's errors that name no file ("linking with `cc` failed", "No space left on
+    /// device"), as it rendered them.
+    unlocated: Vec<String>,
+    /// cargo's own messages (empty when they went to the terminal: `show_progress`).
     stderr: String,
+}
+
+impl Attempt {
+    /// What to show of a failure no located error explains: the compiler's unlocated errors,
+    /// else cargo's `error` lines and what follows each (a file it could not read, a process it
+    /// could not run, a signal that ended rustc), else cargo's last lines.
+    fn unlocated(&self) -> String {
+        if !self.unlocated.is_empty() {
+            return self.unlocated.join("\n");
+        }
+        if self.stderr.trim().is_empty() {
+            return "(cargo printed its messages above)".into();
+        }
+        let lines: Vec<&str> = self.stderr.lines().collect();
+        let errors: Vec<&str> = match lines.iter().position(|l| l.starts_with("error")) {
+            Some(first) => lines[first..].to_vec(),
+            None => lines[lines.len().saturating_sub(20)..].to_vec(),
+        };
+        errors.join("\n")
+    }
 }
 
 fn cargo_build(
@@ -172,11 +198,15 @@ fn cargo_build(
     if let Some(dir) = &options.target_dir {
         command.env("CARGO_TARGET_DIR", dir);
     }
+    if let Some(user) = &options.run_as {
+        crate::platform::run_as(&mut command, user);
+    }
     let output = command.output().map_err(|e| format!("could not run cargo: {e}"))?;
     let stdout = String::from_utf8_lossy(&output.stdout);
     let stderr = String::from_utf8_lossy(&output.stderr).into_owned();
     let mut binary = None;
     let mut errors = Vec::new();
+    let mut unlocated = Vec::new();
     for line in stdout.lines() {
         let Ok(message) = serde_json::from_str::<Value>(line) else { continue };
         match message["reason"].as_str() {
@@ -187,17 +217,24 @@ fn cargo_build(
             }
             Some("compiler-message") if message["message"]["level"] == "error" => {
                 let package = package_name(message["package_id"].as_str().unwrap_or_default());
-                if let Some(error) = compile_error(&ws.root, &message["message"]) {
-                    errors.push(Located { package, error });
+                match compile_error(&ws.root, &message["message"]) {
+                    Some(error) => errors.push(Located { package, error }),
+                    None => {
+                        let text = message["message"]["message"].as_str().unwrap_or_default();
+                        if !text.starts_with("aborting due to") {
+                            let rendered = message["message"]["rendered"].as_str().unwrap_or(text);
+                            unlocated.push(rendered.trim_end().to_owned());
+                        }
+                    }
                 }
             }
             _ => {}
         }
     }
     if output.status.success() {
-        return Ok(Attempt { binary, errors: None, stderr });
+        return Ok(Attempt { binary, errors: None, unlocated, stderr });
     }
-    Ok(Attempt { binary, errors: Some(errors), stderr })
+    Ok(Attempt { binary, errors: Some(errors), unlocated, stderr })
 }
 
 /// The package name in a cargo package id, in either form cargo prints:
@@ -277,5 +314,29 @@ mod tests {
         assert_eq!(error.location, "lectures/07-r/src/refract.rs:42:13");
         assert_eq!(error.message, "mismatched types");
         assert!(!error.in_checks);
+    }
+
+    /// A build that fails with no error naming a file (a full disk, rustc killed for memory)
+    /// says what cargo said, not an empty message: CI once showed only "the checks do not
+    /// compile even without any lecture:" and nothing after it.
+    #[test]
+    fn a_failure_no_file_explains_shows_what_cargo_said() {
+        let attempt = |unlocated: &[&str], stderr: &str| Attempt {
+            binary: None,
+            errors: Some(Vec::new()),
+            unlocated: unlocated.iter().map(|s| s.to_string()).collect(),
+            stderr: stderr.into(),
+        };
+        let killed = "   Compiling raylab v0.1.0\nerror: could not compile `raylab` (lib)\n\nCaused by:\n  \
+                      process didn't exit successfully: `rustc …` (signal: 9, SIGKILL: kill)";
+        let said = attempt(&[], killed).unlocated();
+        assert!(said.starts_with("error: could not compile `raylab`"), "{said}");
+        assert!(said.contains("SIGKILL"), "{said}");
+        let full = attempt(&["error: failed to write …: No space left on device (os error 28)"], killed);
+        assert_eq!(full.unlocated(), "error: failed to write …: No space left on device (os error 28)");
+        let tail: String = (0..30).map(|i| format!("line {i}\n")).collect();
+        let said = attempt(&[], &tail).unlocated();
+        assert!(said.starts_with("line 10") && said.ends_with("line 29"), "{said}");
+        assert_eq!(attempt(&[], "").unlocated(), "(cargo printed its messages above)");
     }
 }

@@ -3,7 +3,7 @@
 //! cores), and collect the verdicts.
 
 use std::collections::BTreeSet;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::sync::Mutex;
 use std::time::{Duration, Instant};
@@ -70,6 +70,11 @@ pub struct GradeOptions {
     /// A judge (the checks built with every exercise stubbed, `submission::judge`): the
     /// checks declared `judged` run in two processes, the verdict the judge's (`run_judged`).
     pub judge: Option<PathBuf>,
+    /// The user the student's code is built and run as (`grade --run-as`); the judge runs as this
+    /// process's.
+    pub run_as: Option<crate::platform::RunAs>,
+    /// Where the grader writes (images, the report), when not `grader/` beside the build.
+    pub out_dir: Option<PathBuf>,
 }
 
 /// The grade of a workspace.
@@ -92,10 +97,13 @@ impl Grade {
     }
 }
 
-/// The folder the grader writes into: `grader/` in the target directory
-/// cargo builds into (the option, else `CARGO_TARGET_DIR`, else the
-/// workspace's `target/`).
+/// The folder the grader writes into: the option `out_dir`, else `grader/` in
+/// the target directory cargo builds into (the option, else
+/// `CARGO_TARGET_DIR`, else the workspace's `target/`).
 pub fn out_dir(ws: &Workspace, options: &GradeOptions) -> PathBuf {
+    if let Some(dir) = &options.out_dir {
+        return dir.clone();
+    }
     let from_env = std::env::var_os("CARGO_TARGET_DIR").filter(|d| !d.is_empty()).map(PathBuf::from);
     let target = options.target_dir.clone().or(from_env).unwrap_or_else(|| ws.root.join("target"));
     // A relative CARGO_TARGET_DIR is relative to where cargo runs: the current folder.
@@ -126,15 +134,21 @@ pub fn grade(ws: &Workspace, options: &GradeOptions) -> Result<Grade, String> {
             ws,
             &BuildOptions {
                 lectures: wanted.clone(),
-                hidden: options.hidden,
+                // Graded with a judge, the hidden checks are the judge's alone: the student's build
+                // has neither their code nor their answers (`raylab-checks/src/remote.rs`).
+                hidden: options.hidden && options.judge.is_none(),
                 release: options.release,
                 f64: options.f64,
                 target_dir: options.target_dir.clone(),
                 show_progress: options.show_progress,
+                run_as: options.run_as.clone(),
             },
         )?,
     };
-    let all = list(&built)?;
+    let mut all = list(&built.binary)?;
+    if let Some(judge) = options.judge.as_ref().filter(|_| options.hidden) {
+        all.extend(hidden_from(judge, &all)?);
+    }
     let mut infos: Vec<Info> = all
         .iter()
         .filter(|i| (options.hidden || !i.hidden) && options.selection.matches(i))
@@ -179,7 +193,7 @@ pub fn grade(ws: &Workspace, options: &GradeOptions) -> Result<Grade, String> {
                     let timeout = Duration::from_secs(info.timeout_s.into());
                     let ran = match &options.judge {
                         Some(judge) if info.judged => {
-                            run_judged(&built.binary, judge, &info.id, &out, timeout)
+                            run_judged(&built.binary, judge, &info, &out, timeout, options.run_as.as_ref())
                         }
                         _ => run_check(&built.binary, &info.id, &scratch, &out, timeout),
                     };
@@ -237,19 +251,26 @@ fn not_runnable(info: &Info, built: &Built) -> Option<Verdict> {
 }
 
 /// `raylab-checks list`.
-fn list(built: &Built) -> Result<Vec<Info>, String> {
-    let output = Command::new(&built.binary)
+fn list(binary: &Path) -> Result<Vec<Info>, String> {
+    let output = Command::new(binary)
         .arg("list")
         .output()
-        .map_err(|e| format!("could not run {}: {e}", built.binary.display()))?;
+        .map_err(|e| format!("could not run {}: {e}", binary.display()))?;
     if !output.status.success() {
-        return Err(format!(
-            "{} list failed: {}",
-            built.binary.display(),
-            String::from_utf8_lossy(&output.stderr)
-        ));
+        return Err(format!("{} list failed: {}", binary.display(), String::from_utf8_lossy(&output.stderr)));
     }
     serde_json::from_slice(&output.stdout).map_err(|e| format!("the list of checks: {e}"))
+}
+
+/// The hidden checks, as the judge lists them: each runs where its lecture's visible checks do
+/// (`subject`, the student's build's list).
+fn hidden_from(judge: &Path, subject: &[Info]) -> Result<Vec<Info>, String> {
+    let built = |lecture: &str| subject.iter().any(|i| i.lecture == lecture && !i.hidden && i.available);
+    Ok(list(judge)?
+        .into_iter()
+        .filter(|i| i.hidden)
+        .map(|i| Info { available: built(&i.lecture), ..i })
+        .collect())
 }
 
 #[cfg(test)]

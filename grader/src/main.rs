@@ -97,6 +97,12 @@ enum Cmd {
         /// [default: target/grader/submission].
         #[arg(long)]
         workdir: Option<PathBuf>,
+        /// Build and run the student's code as this user (Unix; the grader runs as root): one that
+        /// cannot read this workspace, where the judge, the snapshots and the hidden checks are.
+        /// The user owns only the folder cargo builds in (work/target/student). What Gradescope's
+        /// `run_autograder` does.
+        #[arg(long, value_name = "USER")]
+        run_as: Option<String>,
         #[command(flatten)]
         grade: GradeArgs,
     },
@@ -172,15 +178,17 @@ fn main() -> ExitCode {
         Some(Cmd::Handout { dir, force }) => {
             handout::write(&workspace::own_root(), &dir, force).map(|()| true)
         }
-        Some(Cmd::Grade { submission, workdir, grade }) => {
-            // The student's code runs as this user: keep it out of this process's pipes.
+        Some(Cmd::Grade { submission, workdir, run_as, grade }) => {
+            // The student's code may run as this user: keep it out of this process's pipes.
             platform::keep_others_out();
-            submission::prepare(&workspace::own_root(), &submission, workdir.as_deref()).and_then(
-                |(ws, target)| {
-                    let judge = submission::judge(&workspace::own_root(), &ws.root, &options())?;
-                    grade_command(&Ok(ws), &grade, Some(Submission { target, judge }))
-                },
-            )
+            let run_as = run_as.as_deref().map(platform::user).transpose();
+            run_as.and_then(|run_as| {
+                let root = workspace::own_root();
+                let (ws, target) =
+                    submission::prepare(&root, &submission, workdir.as_deref(), run_as.as_ref())?;
+                let judge = submission::judge(&root, &options())?;
+                grade_command(&Ok(ws), &grade, Some(Submission { target, judge, run_as }))
+            })
         }
         Some(Cmd::Gradescope { dir, force }) => {
             submission::gradescope_bundle(&workspace::own_root(), &dir, force).map(|()| true)
@@ -216,6 +224,8 @@ fn options() -> GradeOptions {
         show_progress: true,
         binary: std::env::var_os("RAYLAB_CHECKS_BINARY").map(PathBuf::from),
         judge: None,
+        run_as: None,
+        out_dir: None,
     }
 }
 
@@ -226,6 +236,8 @@ struct Submission {
     target: PathBuf,
     /// The judge binary (`submission::judge`).
     judge: PathBuf,
+    /// The user the student's code runs as (`--run-as`).
+    run_as: Option<platform::RunAs>,
 }
 
 fn grade_command(
@@ -237,11 +249,14 @@ fn grade_command(
     let mut options = options();
     options.selection = Selection::parse(&args.select)?;
     options.only_prerequisites = true;
-    if let Some(Submission { target, judge }) = submission {
+    if let Some(Submission { target, judge, run_as }) = submission {
         // A submission: hidden checks in, judged checks judged apart from the student's code.
         options.hidden = true;
         options.target_dir = Some(target);
         options.judge = Some(judge);
+        options.run_as = run_as;
+        // The grader's output stays its own, beside the student's build (see submission::prepare).
+        options.out_dir = Some(ws.root.join("target").join("grader"));
     }
     if let Some(jobs) = args.jobs {
         options.jobs = jobs;
@@ -318,6 +333,7 @@ fn forward(tool: &str, args: &[String]) -> Result<bool, String> {
                     f64: options.f64,
                     target_dir: None,
                     show_progress: true,
+                    run_as: None,
                 },
             )?;
             if let Some((lecture, error)) = built.failed.iter().next() {

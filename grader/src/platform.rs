@@ -20,6 +20,74 @@ pub fn keep_others_out() {
 #[cfg(any(not(target_os = "linux"), feature = "portable"))]
 pub fn keep_others_out() {}
 
+/// A user the student's code is built and run as (`grade --run-as`): on
+/// Gradescope, one that cannot read the autograder's source, where the judge,
+/// the snapshots and the hidden checks are.
+#[derive(Clone, Debug)]
+#[cfg_attr(any(not(unix), feature = "portable"), allow(dead_code, reason = "made on Unix only"))]
+pub struct RunAs {
+    pub name: String,
+    pub uid: u32,
+    pub gid: u32,
+}
+
+/// The user named `name`.
+#[cfg(all(unix, not(feature = "portable")))]
+pub fn user(name: &str) -> Result<RunAs, String> {
+    let user = nix::unistd::User::from_name(name)
+        .map_err(|e| format!("the user {name}: {e}"))?
+        .ok_or_else(|| format!("no user {name} on this machine (useradd --system {name})"))?;
+    Ok(RunAs { name: name.to_owned(), uid: user.uid.as_raw(), gid: user.gid.as_raw() })
+}
+
+/// Another user: Unix only.
+#[cfg(any(not(unix), feature = "portable"))]
+pub fn user(name: &str) -> Result<RunAs, String> {
+    Err(format!("--run-as {name}: running the student's code as another user needs Unix"))
+}
+
+/// Makes `command` run as `user` (its supplementary groups dropped).
+#[cfg(all(unix, not(feature = "portable")))]
+pub fn run_as(command: &mut std::process::Command, user: &RunAs) {
+    use std::os::unix::process::CommandExt;
+    command.uid(user.uid).gid(user.gid);
+}
+
+/// Another user: never reached (see [`user`]).
+#[cfg(any(not(unix), feature = "portable"))]
+pub fn run_as(command: &mut std::process::Command, user: &RunAs) {
+    let _ = (command, user);
+}
+
+/// Gives `path` to `user` (not following a symbolic link).
+#[cfg(all(unix, not(feature = "portable")))]
+pub fn give(path: &Path, user: &RunAs) -> Result<(), String> {
+    std::os::unix::fs::lchown(path, Some(user.uid), Some(user.gid))
+        .map_err(|e| format!("{}: {e}", path.display()))
+}
+
+/// Another user: never reached (see [`user`]).
+#[cfg(any(not(unix), feature = "portable"))]
+pub fn give(path: &Path, user: &RunAs) -> Result<(), String> {
+    let _ = (path, user);
+    Ok(())
+}
+
+/// Takes `path` back for this process's user (not following a symbolic link).
+#[cfg(all(unix, not(feature = "portable")))]
+pub fn reclaim(path: &Path) -> Result<(), String> {
+    use nix::unistd::{getgid, getuid};
+    std::os::unix::fs::lchown(path, Some(getuid().as_raw()), Some(getgid().as_raw()))
+        .map_err(|e| format!("{}: {e}", path.display()))
+}
+
+/// This process's user: nothing to take back (see [`user`]).
+#[cfg(any(not(unix), feature = "portable"))]
+pub fn reclaim(path: &Path) -> Result<(), String> {
+    let _ = path;
+    Ok(())
+}
+
 /// Starts the child in a process group of its own (its id the group's), so that
 /// [`end_group`] ends whatever it started.
 #[cfg(all(unix, not(feature = "portable")))]

@@ -3,7 +3,7 @@
 //! answer back and carries on.
 
 use std::ffi::OsString;
-use std::io::{BufRead, BufReader, Read};
+use std::io::{BufRead, BufReader, Read, Write};
 use std::net::TcpStream;
 use std::path::{Path, PathBuf};
 use std::process::{Command, ExitStatus, Stdio};
@@ -49,7 +49,7 @@ pub fn run_check(
     let _ = std::fs::remove_file(&verdict);
     let mut args: Vec<OsString> = vec!["run".into(), id.into(), "--verdict".into(), verdict.clone().into()];
     args.extend(["--out".into(), out.into()]);
-    let mut ran = run_process(binary, id, &args, timeout)?;
+    let mut ran = run_process(binary, id, &args, timeout, None)?;
     ran.verdict = std::fs::read_to_string(&verdict).ok();
     Ok(ran)
 }
@@ -60,19 +60,24 @@ const JUDGE_GRACE: Duration = Duration::from_secs(60);
 
 /// Runs a judged check (`raylab-checks/src/judge.rs`): `judge ID` from the
 /// `judge` binary, which runs no student code and prints the verdict, and
-/// `run ID --channel ADDR` from `subject`, the student's build, under the time
-/// limit and output caps. The verdict is the judge's; when it has none (the
-/// subject ended before the check did), how the subject ended.
+/// `run ID --channel ADDR` (a hidden check: `serve --channel ADDR`) from
+/// `subject`, the student's build, under the time limit and output caps. The
+/// verdict is the judge's; when it has none (the subject ended before the
+/// check did), how the subject ended.
 pub fn run_judged(
     subject: &Path,
     judge: &Path,
-    id: &str,
+    info: &raylab_protocol::Info,
     out: &Path,
     timeout: Duration,
+    run_as: Option<&crate::platform::RunAs>,
 ) -> Result<Ran, String> {
+    let id = info.id.as_str();
+    let token = fresh_token();
     let mut judging = Command::new(judge)
         .args(["judge", id, "--out"])
         .arg(out)
+        .args(["--token", &token.to_string()])
         .env("RAYON_NUM_THREADS", "1")
         .env("RUST_BACKTRACE", "0")
         .stdin(Stdio::null())
@@ -101,13 +106,21 @@ pub fn run_judged(
         }
         (out, err)
     });
-    let args: Vec<OsString> =
-        vec!["run".into(), id.into(), "--channel".into(), address.clone().into(), "--out".into(), out.into()];
-    let ran = run_process(subject, id, &args, timeout);
-    // A subject that never connected leaves the judge waiting for it: this connection ends that
-    // wait (with nothing to read). After a subject did connect, the judge listens no more.
-    if let Ok(address) = address.parse() {
-        let _ = TcpStream::connect_timeout(&address, Duration::from_secs(1));
+    // A hidden check runs in the judge alone; its subject makes the calls the judge asks for.
+    let mut args: Vec<OsString> = if info.hidden {
+        vec!["serve".into()]
+    } else {
+        vec!["run".into(), id.into(), "--out".into(), out.into()]
+    };
+    args.extend(["--channel".into(), address.clone().into(), "--token".into(), token.to_string().into()]);
+    let ran = run_process(subject, id, &args, timeout, run_as);
+    // A subject that never connected leaves the judge waiting for it: this word ends that wait.
+    // After a subject did connect, the judge listens no more; and should its port be another
+    // judge's by now, that judge has another token and drops this connection.
+    if let Ok(address) = address.parse()
+        && let Ok(mut stream) = TcpStream::connect_timeout(&address, Duration::from_secs(1))
+    {
+        let _ = stream.write_all(&raylab_protocol::no_subject(token));
     }
     let deadline = Instant::now() + JUDGE_GRACE;
     let judged = loop {
@@ -137,8 +150,28 @@ pub fn run_judged(
     }
 }
 
-/// Runs `binary ARGS` (one check, `id`) with a time limit and a cap on its output.
-fn run_process(binary: &Path, id: &str, args: &[OsString], timeout: Duration) -> Result<Ran, String> {
+/// A token no other judge of this machine's has now: what pairs a judge with its subject.
+fn fresh_token() -> u64 {
+    use std::hash::{BuildHasher, Hasher};
+    static COUNT: AtomicU64 = AtomicU64::new(0);
+    // std's hasher keys are random per process; the count and the time tell this process's apart.
+    let mut hasher = std::collections::hash_map::RandomState::new().build_hasher();
+    hasher.write_u64(COUNT.fetch_add(1, Ordering::Relaxed));
+    hasher.write_u32(std::process::id());
+    hasher.write_u128(
+        std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH).map_or(0, |d| d.as_nanos()),
+    );
+    hasher.finish()
+}
+
+/// Runs `binary ARGS` (one check, `id`) with a time limit and a cap on its output, as `run_as` if given.
+fn run_process(
+    binary: &Path,
+    id: &str,
+    args: &[OsString],
+    timeout: Duration,
+    run_as: Option<&crate::platform::RunAs>,
+) -> Result<Ran, String> {
     let start = Instant::now();
     let mut command = Command::new(binary);
     command
@@ -152,6 +185,9 @@ fn run_process(binary: &Path, id: &str, args: &[OsString], timeout: Duration) ->
         .stderr(Stdio::piped());
     // In a process group of its own, so that what it starts ends with it.
     crate::platform::own_group(&mut command);
+    if let Some(user) = run_as {
+        crate::platform::run_as(&mut command, user);
+    }
     let mut child = command.spawn().map_err(|e| format!("could not start {}: {e}", binary.display()))?;
     let printed = Arc::new(AtomicU64::new(0));
     let flood = Arc::new(AtomicBool::new(false));

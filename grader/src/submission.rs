@@ -21,6 +21,18 @@ const NOT_COPIED: &[&str] = &["target", ".git", "book/book"];
 /// The largest submission read, in bytes: a lecture's sources are ~100 kB.
 const MAX_SUBMISSION_BYTES: u64 = 20 << 20;
 
+/// What only the judge may read (`submission::judge`), kept out of the work folder where the
+/// student's code is built and run: the snapshots (a render that copies its snapshot would pass),
+/// the book's figures (copies of them) and the hidden checks (their inputs and answers).
+fn judges_only(relative: &str) -> bool {
+    let parts: Vec<&str> = relative.split('/').collect();
+    (parts.len() >= 3 && parts[0] == "lectures" && parts[2] == "snapshots")
+        || under(relative, &["book/src/figures", HIDDEN_CHECKS])
+}
+
+/// The hidden checks' source: the judge's alone.
+const HIDDEN_CHECKS: &str = "grader/checks/src/lectures/hidden.rs";
+
 /// Whether `relative` is one of `folders` or inside one.
 fn under(relative: &str, folders: &[&str]) -> bool {
     folders.iter().any(|f| relative == *f || relative.starts_with(&format!("{f}/")))
@@ -32,11 +44,13 @@ fn is_lecture_source(relative: &str) -> bool {
     parts.len() >= 3 && parts[0] == "lectures" && parts[2] == "src"
 }
 
-/// Prepares the work folder for `submission` and returns it, with its target folder.
+/// Prepares the work folder for `submission` and returns it, with the folder cargo builds the
+/// student's code in (`work/target`; as another user, `work/target/student`, theirs).
 pub fn prepare(
     root: &Path,
     submission: &Path,
     workdir: Option<&Path>,
+    run_as: Option<&crate::platform::RunAs>,
 ) -> Result<(Workspace, PathBuf), String> {
     let root = root.canonicalize().map_err(|e| format!("{}: {e}", root.display()))?;
     let submitted = find_lectures(submission)?;
@@ -46,7 +60,10 @@ pub fn prepare(
     }
     std::fs::create_dir_all(&work).map_err(|e| format!("{}: {e}", work.display()))?;
     let work = work.canonicalize().map_err(|e| format!("{}: {e}", work.display()))?;
-    mirror(&root, &work, &|relative| !under(relative, NOT_COPIED) && !is_lecture_source(relative))?;
+    mirror(&root, &work, &|relative| {
+        !under(relative, NOT_COPIED) && !is_lecture_source(relative) && !judges_only(relative)
+    })?;
+    remove_judges_only(&work)?;
     let ws = Workspace::open(&root)?;
     let mut taken = Vec::new();
     for lecture in &ws.lectures {
@@ -67,8 +84,48 @@ pub fn prepare(
         if taken.is_empty() { "none".to_owned() } else { taken.join(", ") },
         work.display()
     );
-    let target = work.join("target");
+    // Where cargo builds the student's code.
+    let target = match run_as {
+        Some(user) => {
+            eprintln!("the student's code is built and run as {}", user.name);
+            student_target(&work, user)?
+        }
+        None => work.join("target"),
+    };
     Ok((Workspace::open(&work)?, target))
+}
+
+/// Removes from the work folder `work` what an earlier grader put there and only the judge may
+/// read ([`judges_only`]).
+fn remove_judges_only(work: &Path) -> Result<(), String> {
+    let mut gone: Vec<PathBuf> = vec![work.join("book/src/figures"), work.join(HIDDEN_CHECKS)];
+    if let Ok(entries) = std::fs::read_dir(work.join("lectures")) {
+        gone.extend(entries.filter_map(Result::ok).map(|e| e.path().join("snapshots")));
+    }
+    for path in gone {
+        let removed = if path.is_dir() {
+            std::fs::remove_dir_all(&path)
+        } else if path.is_file() {
+            std::fs::remove_file(&path)
+        } else {
+            Ok(())
+        };
+        removed.map_err(|e| format!("{}: {e}", path.display()))?;
+    }
+    Ok(())
+}
+
+/// Where `user` builds the student's code: `work/target/student`, theirs, and nothing else of the
+/// work folder. The sources stay the grader's (the user reads them), and so does the grader's
+/// output, `work/target/grader`, which the judge writes as root: in a folder the user owned, a
+/// link could turn those writes elsewhere.
+fn student_target(work: &Path, user: &crate::platform::RunAs) -> Result<PathBuf, String> {
+    let student = work.join("target").join("student");
+    std::fs::create_dir_all(&student).map_err(|e| format!("{}: {e}", student.display()))?;
+    crate::platform::reclaim(work)?;
+    crate::platform::reclaim(&work.join("target"))?;
+    crate::platform::give(&student, user)?;
+    Ok(student)
 }
 
 /// Writes lecture `lecture`'s sources into `target` as the handout has them:
@@ -85,15 +142,24 @@ fn stub_lecture(root: &Path, lecture: &crate::workspace::Lecture, target: &Path)
     })
 }
 
-/// The judge of a submission graded in `work`: the instructor's workspace with
-/// every exercise stubbed (`todo!()`) and the hidden checks in, built in
-/// `work/target/judge`. It runs no student code and no reference solution: a
-/// check that called either without `judge::student` would stop on a stub
-/// (the reference graded as a submission proves there is none). Built once;
-/// later submissions find it up to date.
-pub fn judge(root: &Path, work: &Path, options: &crate::grade::GradeOptions) -> Result<PathBuf, String> {
+/// The judge of submissions: the instructor's workspace with every exercise
+/// stubbed (`todo!()`), the snapshots and the hidden checks in, built in
+/// `ROOT/target/grader/judge`, outside every work folder (on Gradescope,
+/// inside the autograder's source, which the student's user cannot read). It
+/// runs no student code and no reference solution: a check that called either
+/// without `judge::student` would stop on a stub (the reference graded as a
+/// submission proves there is none). Built once; later submissions find it up
+/// to date.
+pub fn judge(root: &Path, options: &crate::grade::GradeOptions) -> Result<PathBuf, String> {
     let root = root.canonicalize().map_err(|e| format!("{}: {e}", root.display()))?;
-    let tree = work.join("target").join("judge");
+    let tree = root.join("target").join("grader").join("judge");
+    // Two graders at once (a class graded in parallel) would rewrite the tree under each
+    // other's cargo: the second waits here until the first has built, then finds it up to date.
+    let lock_path = tree.with_extension("lock");
+    std::fs::create_dir_all(root.join("target").join("grader"))
+        .map_err(|e| format!("{}: {e}", lock_path.display()))?;
+    let lock = std::fs::File::create(&lock_path).map_err(|e| format!("{}: {e}", lock_path.display()))?;
+    lock.lock().map_err(|e| format!("{}: {e}", lock_path.display()))?;
     mirror(&root, &tree, &|relative| !under(relative, NOT_COPIED) && !is_lecture_source(relative))?;
     let ws = Workspace::open(&root)?;
     for lecture in &ws.lectures {
@@ -109,6 +175,7 @@ pub fn judge(root: &Path, work: &Path, options: &crate::grade::GradeOptions) -> 
             f64: options.f64,
             target_dir: Some(tree.join("target")),
             show_progress: options.show_progress,
+            run_as: None,
         },
     )?;
     if let Some((lecture, error)) = built.failed.iter().next() {
@@ -232,7 +299,10 @@ fn write_if_changed(path: &Path, bytes: &[u8]) -> Result<(), String> {
     std::fs::write(path, bytes).map_err(|e| format!("{}: {e}", path.display()))
 }
 
-/// `grader gradescope DIR`: the autograder bundle (zip DIR's contents and upload them).
+/// `grader gradescope DIR`: the autograder bundle. Gradescope unzips it into
+/// `/autograder/source` and runs `setup.sh` there once (as root), then
+/// `run_autograder` for each submission; so DIR holds the pristine workspace
+/// (hidden checks included) with the two scripts at its top.
 pub fn gradescope_bundle(root: &Path, dir: &Path, force: bool) -> Result<(), String> {
     if dir.exists() {
         if !force || !dir.join("run_autograder").is_file() {
@@ -241,13 +311,11 @@ pub fn gradescope_bundle(root: &Path, dir: &Path, force: bool) -> Result<(), Str
         std::fs::remove_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
     }
     let root = root.canonicalize().map_err(|e| format!("{}: {e}", root.display()))?;
-    mirror(&root, &dir.join("source"), &|relative| {
-        !under(relative, NOT_COPIED) && !relative.ends_with("/target")
-    })?;
+    mirror(&root, dir, &|relative| !under(relative, NOT_COPIED) && !relative.ends_with("/target"))?;
     let toolchain = env!("CARGO_PKG_RUST_VERSION");
-    let setup = SETUP.replace("{TOOLCHAIN}", toolchain);
+    let setup = SETUP.replace("{TOOLCHAIN}", toolchain).replace("{USER}", GRADING_USER);
     write_script(&dir.join("setup.sh"), &setup)?;
-    write_script(&dir.join("run_autograder"), RUN_AUTOGRADER)?;
+    write_script(&dir.join("run_autograder"), &RUN_AUTOGRADER.replace("{USER}", GRADING_USER))?;
     println!(
         "Gradescope bundle written to {}.\nZip its contents (setup.sh and run_autograder at the top) and upload \
          them as the autograder:\n  (cd {} && zip -qr ../autograder.zip .)",
@@ -257,6 +325,10 @@ pub fn gradescope_bundle(root: &Path, dir: &Path, force: bool) -> Result<(), Str
     Ok(())
 }
 
+/// The user the bundle builds and runs the student's code as: it cannot read
+/// `/autograder/source`, where the judge, the snapshots and the hidden checks are.
+pub const GRADING_USER: &str = "raylab-student";
+
 fn write_script(path: &Path, text: &str) -> Result<(), String> {
     std::fs::write(path, text).map_err(|e| format!("{}: {e}", path.display()))?;
     crate::platform::make_executable(path)
@@ -264,36 +336,90 @@ fn write_script(path: &Path, text: &str) -> Result<(), String> {
 
 /// Gradescope runs this once, as root, to build the autograder image.
 const SETUP: &str = r#"#!/usr/bin/env bash
-# raylab autograder: installs the Rust toolchain and builds the pristine workspace and the
-# work folder, so that grading a submission rebuilds only the lectures it changes.
+# raylab autograder, run once as root when Gradescope builds the image (scripts/gradescope-e2e.sh
+# runs it the same way on any Linux machine). It
+#  1. finds a Rust toolchain (cargo on the PATH or in ~/.cargo), installing one only when none is found;
+#  2. gives the grading user {USER} read-only copies of the toolchain and of the crates' sources in
+#     /usr/local/lib/raylab (hard links where the file system allows), and nothing else: the
+#     autograder's source, where the judge, the snapshots and the hidden checks are, is root's alone;
+#  3. builds the grader and grades the reference once (the judge as root, the student's side as
+#     {USER}), so that grading a submission rebuilds only the lectures it changes.
 set -euo pipefail
-apt-get update -q
-apt-get install -y -q --no-install-recommends build-essential curl ca-certificates
-curl --proto '=https' --tlsv1.2 -sSf https://sh.rustup.rs | sh -s -- -y --profile minimal --default-toolchain {TOOLCHAIN}
-source "$HOME/.cargo/env"
-cd /autograder/source
+AUTOGRADER=/autograder
+SOURCE="$AUTOGRADER/source"
+SHARED=/usr/local/lib/raylab
+USER_NAME={USER}
+
+# 1. A toolchain.
+if ! command -v cargo > /dev/null && [ -f "$HOME/.cargo/env" ]; then
+  source "$HOME/.cargo/env"
+fi
+if command -v cargo > /dev/null; then
+  echo "setup: using the installed toolchain: $(cargo --version)"
+else
+  echo "setup: no Rust toolchain found; installing {TOOLCHAIN} with rustup"
+  apt-get update -q
+  apt-get install -y -q --no-install-recommends build-essential curl ca-certificates
+  curl --proto '=https' --tlsv1.2 -sSf https://sh.rustup.rs \
+    | sh -s -- -y --profile minimal --default-toolchain {TOOLCHAIN}
+  source "$HOME/.cargo/env"
+fi
+
+# 2. The grading user, and what it may read.
+id "$USER_NAME" > /dev/null 2>&1 || useradd --system --no-create-home --shell /usr/sbin/nologin "$USER_NAME"
+share() { # share FROM TO: a read-only copy owned by root, hard-linked where possible
+  rm -rf "$2"
+  mkdir -p "$(dirname "$2")"
+  cp -al "$1" "$2" 2> /dev/null || cp -a "$1" "$2"
+  chmod -R a+rX "$2"
+}
+SYSROOT="$(rustc --print sysroot)"
+if runuser -u "$USER_NAME" -- "$SYSROOT/bin/cargo" --version > /dev/null 2>&1; then
+  TOOLCHAIN_BIN="$SYSROOT/bin"
+else
+  share "$SYSROOT" "$SHARED/toolchain"
+  TOOLCHAIN_BIN="$SHARED/toolchain/bin"
+fi
+REGISTRY="${CARGO_HOME:-$HOME/.cargo}/registry"
+if [ -d "$REGISTRY" ] && [ ! -d "$SHARED/cargo/registry" ]; then
+  share "$REGISTRY" "$SHARED/cargo/registry"
+fi
+mkdir -p "$SHARED/cargo"
+printf 'export PATH="%s:$PATH"\nexport CARGO_HOME="%s"\nexport CARGO_NET_OFFLINE=true\n' \
+  "$TOOLCHAIN_BIN" "$SHARED/cargo" > "$SHARED/env"
+# The crates' sources: fetched once here (the student's builds are offline).
+PATH="$TOOLCHAIN_BIN:$PATH" CARGO_HOME="$SHARED/cargo" cargo fetch --locked --manifest-path "$SOURCE/Cargo.toml"
+chmod -R a+rX "$SHARED"
+chmod 700 "$SOURCE"
+chmod o+x "$AUTOGRADER"
+
+# 3. The grader, the judge and the work folder, from the reference.
+source "$SHARED/env"
+cd "$SOURCE"
 cargo build -p grader
-# Grade the reference once in the work folder: builds every lecture and the checks there.
-./target/debug/grader grade --submission /autograder/source --workdir /autograder/work --strict --format json -o /tmp/reference.json
+./target/debug/grader grade --submission "$SOURCE" --workdir "$AUTOGRADER/work" --run-as "$USER_NAME" \
+  --strict --format json -o /tmp/raylab-reference.json
+echo "setup: the reference scores full marks"
 "#;
 
 /// Gradescope runs this for each submission.
 const RUN_AUTOGRADER: &str = r#"#!/usr/bin/env bash
 # raylab autograder: grades /autograder/submission (only its lectures/*/src is read) with the
-# hidden checks, and writes /autograder/results/results.json.
+# hidden checks, the student's code built and run as {USER} (setup.sh), and writes
+# /autograder/results/results.json.
 set -uo pipefail
-source "$HOME/.cargo/env"
+source /usr/local/lib/raylab/env
 mkdir -p /autograder/results
 cd /autograder/source
 if ! ./target/debug/grader grade --submission /autograder/submission --workdir /autograder/work \
-    --format gradescope -o /autograder/results/results.json 2> /tmp/grader.err; then
+    --run-as {USER} --format gradescope -o /autograder/results/results.json 2> /tmp/grader.err; then
   if [ ! -s /autograder/results/results.json ]; then
-    python3 - <<'EOF'
+    python3 -c '
 import json
-err = open('/tmp/grader.err').read()[-4000:]
+err = open("/tmp/grader.err").read()[-4000:]
 json.dump({"score": 0, "output": "The grader could not grade this submission:\n" + err,
-           "stdout_visibility": "visible"}, open('/autograder/results/results.json', 'w'))
-EOF
+           "stdout_visibility": "visible"}, open("/autograder/results/results.json", "w"))
+'
   fi
 fi
 "#;

@@ -461,7 +461,10 @@ fn each_week_grades_its_lectures_images_included() {
                 status == "not_started" || status == "blocked"
             };
             if !ok {
-                problems.push(format!("{name}: {id} is {status}: {}", check["summary"]));
+                // What the check printed, to tell a student's crash from the grader's own.
+                let output = check["output"].as_str().unwrap_or_default();
+                problems
+                    .push(format!("{name}: {id} is {status}: {}\n  its output: {output}", check["summary"]));
             }
         }
         assert!(images >= 3, "{name}: only {images} image checks graded\n{stderr}");
@@ -607,10 +610,13 @@ fn the_gradescope_bundle_has_its_scripts_and_the_pristine_workspace() {
     }
     let run = std::fs::read_to_string(dir.join("run_autograder")).unwrap();
     assert!(run.contains("grade --submission /autograder/submission") && run.contains("results.json"));
-    // The pristine workspace, hidden checks included, no build products.
-    assert!(dir.join("source/grader/checks/src/lectures/hidden.rs").is_file());
-    assert!(dir.join("source/lectures/02-ray-casting/src/sphere.rs").is_file());
-    assert!(!dir.join("source/target").exists());
+    assert!(run.contains("--run-as raylab-student"), "the student's code runs as the grading user");
+    // The pristine workspace at the top (Gradescope unzips the bundle into /autograder/source),
+    // hidden checks included, no build products.
+    assert!(dir.join("Cargo.toml").is_file());
+    assert!(dir.join("grader/checks/src/lectures/hidden.rs").is_file());
+    assert!(dir.join("lectures/02-ray-casting/src/sphere.rs").is_file());
+    assert!(!dir.join("target").exists());
 }
 
 /// The recipe of ARCHITECTURE.md ("Adding a lecture"), followed in a copy of the tree: a

@@ -14,9 +14,11 @@ pub use raylab_protocol::{Failure, Images, Info, Kind, Outcome};
 
 pub use raylab_testing::{ray, v, wide, wide3};
 
-/// Whether `a` and `b` agree within `tol` in every component.
+/// Whether `a` and `b` agree within `tol` in every component; never with a NaN in either (glam's
+/// `max_element`, like `f32::max`, drops a NaN beside a number: (NaN, 0, 0) would pass).
 pub fn near3(a: Vec3, b: Vec3, tol: Float) -> bool {
-    (a - b).abs().max_element() <= tol
+    let d = (a - b).abs();
+    !d.is_nan() && d.max_element() <= tol
 }
 
 /// `ray from (…) along (…)`.
@@ -167,7 +169,7 @@ pub fn close3(
     tolerance: Float,
     cause: &str,
 ) -> Result<(), Failure> {
-    let ok = (got - expected).abs().max_element() <= tolerance;
+    let ok = near3(got, expected, tolerance);
     ensure(ok, case, format!("{} (± {tolerance:.1e} each)", vec3(expected)), vec3(got), cause)
 }
 
@@ -224,6 +226,17 @@ pub mod testing {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// glam's `max_element` drops a NaN beside a number: |(NaN, 0, 0)| would be 0 and pass.
+    #[test]
+    fn a_nan_component_is_never_close() {
+        let nan = Vec3::new(Float::NAN, 0.0, 0.0);
+        for (a, b) in [(nan, Vec3::ZERO), (Vec3::ZERO, nan), (Vec3::new(0.0, 0.0, Float::NAN), Vec3::ZERO)] {
+            assert!(!near3(a, b, 1.0), "{a} near {b}");
+            assert!(close3("a NaN", a, b, 1.0, "never close").is_err(), "{a} close to {b}");
+        }
+        assert!(near3(Vec3::ONE, Vec3::ONE, 0.0));
+    }
 
     #[test]
     fn outcomes_round_trip_through_json() {

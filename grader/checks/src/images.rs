@@ -22,6 +22,7 @@ use raylab::compare::compare;
 use raylab::{Color, Float, Image, Scene, Vec3};
 
 use crate::check::{CheckResult, Failure, Images, Info, Kind, Meta, fail};
+use crate::judge;
 use crate::stages::{self, FINAL_STAGE};
 
 /// A pixel differs when one of its 8-bit sRGB channels moves by more than
@@ -136,8 +137,7 @@ pub fn infos() -> Vec<Info> {
             points: 1,
             needs: stages::needs(&file.lecture),
             about: "object-id, depth and normal images against the reference's",
-            // Not yet: the scene checks still judge in the process that runs the student's code.
-            judged: false,
+            judged: true,
         };
         if has_geometry_check(&file.lecture) {
             infos.push(crate::check::info(&file.lecture, &geometry, false, stages::built(&file.lecture)));
@@ -235,10 +235,20 @@ pub fn geometry_images(lecture: &str, scene: &Scene) -> Result<[Image; 3], Strin
     Err(format!("the intersections for lecture {lecture}'s scenes are not built"))
 }
 
-/// How the three geometry images differ from the snapshots: `None` when
-/// they match.
-fn geometry_difference(file: &SceneFile, scene: &Scene) -> Result<Option<Failure>, String> {
-    let [id, depth, normal] = geometry_images(&file.lecture, scene)?;
+/// The student's three geometry images of `scene` (see [`geometry_images`]), as one value of
+/// their code (`judge::student`).
+fn student_geometry(lecture: &str, scene: &Scene) -> Result<[Image; 3], String> {
+    judge::student(|| geometry_images(lecture, scene))
+}
+
+/// How the student's three geometry images differ from the snapshots: `None` when
+/// they match. The judge's (it holds the snapshots).
+fn geometry_difference(
+    file: &SceneFile,
+    scene: &Scene,
+    geometry: Result<[Image; 3], String>,
+) -> Result<Option<Failure>, String> {
+    let [id, depth, normal] = geometry?;
     let load_png = |suffix| Image::load_png(file.snapshot(suffix)).map_err(|e| no_snapshot(file, e));
     let load_exr = |suffix| Image::load_exr(file.snapshot(suffix)).map_err(|e| no_snapshot(file, e));
     let (id_ref, depth_ref, normal_ref) =
@@ -354,49 +364,83 @@ fn no_snapshot(file: &SceneFile, e: impl std::fmt::Display) -> String {
 fn check_geometry(file: &SceneFile) -> CheckResult {
     let scene = raylab::scene::load(&file.scene)
         .map_err(|e| fail(&file.folder, "the scene loads", e, "the scene file"))?;
-    match geometry_difference(file, &scene) {
+    let geometry = student_geometry(&file.lecture, &scene);
+    judge::judge_only(|| match geometry_difference(file, &scene, geometry) {
         Ok(None) => Ok("object ids, depths and normals match".into()),
         Ok(Some(failure)) => Err(failure),
         Err(e) => Err(fail(format!("{}/{}", file.folder, file.name()), "the geometry images", e, "")),
-    }
+    })
+    .unwrap_or_else(|| Ok(String::new()))
+}
+
+/// A student's picture against its snapshot: the judge's (see [`check_image`]).
+struct Compared {
+    expected: Image,
+    comparison: raylab::compare::Comparison,
+    images: Images,
+    /// The comparison's figures, as the verdict states them.
+    measured: String,
+}
+
+/// Compares `yours` with the snapshot of `file` drawn by `stage`, and writes expected / yours / diff
+/// (the FLIP error map) into `dir`.
+fn compare_with_snapshot(
+    file: &SceneFile,
+    stage: &str,
+    yours: &Image,
+    dir: &Path,
+) -> Result<Compared, Failure> {
+    let case = format!("{}/{}", file.folder, file.name());
+    let expected = Image::load_png(stage_snapshot(file, stage))
+        .map_err(|e| fail(&case, "a snapshot", no_snapshot(file, e), ""))?;
+    let comparison = compare(&expected, yours, CHANNEL_THRESHOLD).map_err(|e| {
+        fail(&case, format!("{}×{}", expected.width, expected.height), e, "one pixel per (x, y), row by row")
+    })?;
+    let images = write_images(dir, &expected, yours).map_err(|e| fail(&case, "images written", e, ""))?;
+    let measured = format!(
+        "{:.3} % of pixels differ by more than {CHANNEL_THRESHOLD} steps (allowed {:.2} %); mean FLIP {:.4}",
+        100.0 * comparison.fraction_over(),
+        100.0 * file.allowed_fraction(),
+        images.flip_mean
+    );
+    let _ = std::fs::remove_file(dir.join("tree.txt"));
+    Ok(Compared { expected, comparison, images, measured })
 }
 
 /// Renders `file` with stage `stage` (its `[render]` settings where the
 /// stage traces) and compares it with the stage's snapshot; writes expected /
 /// yours / diff (the FLIP error map) into `dir`.
+///
+/// Judged (`judge.rs`): the student's code draws the picture, the ray tree of the first differing
+/// pixel, the geometry images and the camera's rays (`judge::student`); the snapshots are read, the
+/// pictures compared and the report's images written by the judge alone (`judge::judge_only`), which
+/// tells the subject only which of those it needs next (`judge::decide`).
 fn check_image(file: &SceneFile, stage: &str, dir: &Path) -> CheckResult {
     let case = format!("{}/{}", file.folder, file.name());
     let scene = raylab::scene::load(&file.scene).map_err(|e| fail(&case, "the scene loads", e, ""))?;
-    let expected = Image::load_png(stage_snapshot(file, stage))
-        .map_err(|e| fail(&case, "a snapshot", no_snapshot(file, e), ""))?;
-    let yours = stages::render(stage, &scene).map_err(|e| fail(&case, "an image", e, ""))?;
-    let c = compare(&expected, &yours, CHANNEL_THRESHOLD).map_err(|e| {
-        fail(&case, format!("{}×{}", expected.width, expected.height), e, "one pixel per (x, y), row by row")
-    })?;
-    let images = write_images(dir, &expected, &yours).map_err(|e| fail(&case, "images written", e, ""))?;
-    let allowed = file.allowed_fraction();
-    let measured = format!(
-        "{:.3} % of pixels differ by more than {CHANNEL_THRESHOLD} steps (allowed {:.2} %); mean FLIP {:.4}",
-        100.0 * c.fraction_over(),
-        100.0 * allowed,
-        images.flip_mean
-    );
-    let tree_file = dir.join("tree.txt");
-    let _ = std::fs::remove_file(&tree_file);
-    if c.fraction_over() <= allowed {
-        return Ok(measured);
-    }
-    let (x, y) = c.first_over.unwrap_or_default();
+    let yours =
+        judge::student(|| stages::render(stage, &scene)).map_err(|e| fail(&case, "an image", e, ""))?;
+    let compared = judge::judge_only(|| compare_with_snapshot(file, stage, &yours, dir));
+    // The first differing pixel of a picture that fails: all the subject learns of the comparison.
+    let differs = judge::decide(|| match &compared {
+        Some(Ok(c)) if c.comparison.fraction_over() > file.allowed_fraction() => c.comparison.first_over,
+        _ => None,
+    });
+    let Some((x, y)) = differs else {
+        return compared.map_or_else(|| Ok(String::new()), |c| c.map(|c| c.measured));
+    };
     // The ray tree of the first differing pixel, for the report (stages that trace a ray tree).
-    if let Some(text) = stages::pixel_tree(stage, &scene, (x, y)) {
-        let text = format!("your ray tree of pixel ({x}, {y}), the first that differs: {text}");
-        let _ = std::fs::write(&tree_file, text);
-    }
+    let tree = judge::student(|| stages::pixel_tree(stage, &scene, (x, y)));
     let cause = if stage == "01" {
-        camera_diagnosis(&yours)
+        judge::judge_only(|| camera_diagnosis(&yours))
     } else {
-        match geometry_difference(file, &scene) {
-            Ok(Some(geometry)) => format!(
+        let geometry = student_geometry(&file.lecture, &scene);
+        let geometry = judge::judge_only(|| geometry_difference(file, &scene, geometry));
+        let matches = judge::decide(|| matches!(geometry, Some(Ok(None))));
+        // The student's eye rays, to find where the differing pixels' surfaces face the lights.
+        let rays = if matches { judge::student(|| camera_rays(&scene)) } else { None };
+        judge::judge_only(|| match geometry {
+            Some(Ok(Some(geometry))) => format!(
                 "the geometry differs already ({}: expected {}, got {}; {}): fix {} first",
                 geometry.case,
                 geometry.expected,
@@ -408,20 +452,32 @@ fn check_image(file: &SceneFile, stage: &str, dir: &Path) -> CheckResult {
                     "the intersections of lectures 02–04 (02 closest_hit, 03 and 04's shapes)".to_owned()
                 }
             ),
-            Ok(None) => format!(
-                "your geometry matches; {}",
-                shading_diagnosis(stage, file, &scene, &expected, &yours)
-            ),
-            Err(e) => e,
-        }
+            Some(Ok(None)) => {
+                let expected = compared.as_ref().and_then(|c| c.as_ref().ok()).map(|c| &c.expected);
+                let diagnosis = expected.map_or_else(String::new, |expected| {
+                    shading_diagnosis(stage, file, &scene, expected, &yours, rays.as_deref())
+                });
+                format!("your geometry matches; {diagnosis}")
+            }
+            Some(Err(e)) => e,
+            None => String::new(),
+        })
     };
+    let (Some(Ok(compared)), Some(cause)) = (compared, cause) else {
+        // The subject: its values are sent, the verdict is the judge's.
+        return Ok(String::new());
+    };
+    if let Some(text) = tree {
+        let text = format!("your ray tree of pixel ({x}, {y}), the first that differs: {text}");
+        let _ = std::fs::write(dir.join("tree.txt"), text);
+    }
     let show = |c: Color| format!("({:.3}, {:.3}, {:.3})", c.x, c.y, c.z);
     Err(Failure {
         case,
-        expected: format!("pixel ({x}, {y}) = {} (linear RGB)", show(expected.get(x, y))),
-        got: format!("{}; {measured}", show(yours.get(x, y))),
+        expected: format!("pixel ({x}, {y}) = {} (linear RGB)", show(compared.expected.get(x, y))),
+        got: format!("{}; {}", show(yours.get(x, y)), compared.measured),
         cause,
-        images: Some(Box::new(images)),
+        images: Some(Box::new(compared.images)),
     })
 }
 
@@ -447,6 +503,7 @@ fn shading_diagnosis(
     scene: &Scene,
     expected: &Image,
     yours: &Image,
+    rays: Option<&[raylab::Ray]>,
 ) -> String {
     let (Ok(id), Ok(depth), Ok(normal)) = (
         Image::load_png(file.snapshot(".id.png")),
@@ -459,7 +516,6 @@ fn shading_diagnosis(
     if (id.width, id.height) != (w, h) {
         return "the shading differs".into();
     }
-    let camera = camera_rays(scene);
     let mut over = vec![false; (w * h) as usize];
     for (i, (e, g)) in expected.pixels.iter().zip(&yours.pixels).enumerate() {
         let (e, g) = (raylab::color::to_srgb8(*e), raylab::color::to_srgb8(*g));
@@ -490,7 +546,7 @@ fn shading_diagnosis(
                     material.reflective.max_element() > 0.0 || material.transparent.max_element() > 0.0;
                 glossy += usize::from(reflective);
             }
-            if let (Some(ray), Some(_)) = (camera.as_ref().map(|c| c(x, y)), object) {
+            if let (Some(ray), Some(_)) = (rays.and_then(|r| r.get(i)), object) {
                 let point = ray.origin + ray.dir.normalize() * depth.get(x, y).x;
                 let n = normal.get(x, y);
                 let lit = scene
@@ -555,17 +611,23 @@ fn shading_diagnosis(
     }
 }
 
-/// The primary ray of each pixel of `scene`, from the student's camera when lecture 01 is built.
+/// The primary ray of each pixel of `scene`, row by row, from the student's camera when lecture 01
+/// is built.
 #[allow(unused_variables)]
-fn camera_rays(scene: &Scene) -> Option<impl Fn(u32, u32) -> raylab::Ray> {
+fn camera_rays(scene: &Scene) -> Option<Vec<raylab::Ray>> {
     #[cfg(feature = "l01")]
     {
         let camera = l01_transforms::Camera::from_scene(&scene.camera, scene.width, scene.height).ok()?;
         let (w, h) = (scene.width, scene.height);
-        Some(move |x, y| camera.pixel_ray(x, y, w, h))
+        Some(
+            (0..h)
+                .flat_map(|y| (0..w).map(move |x| (x, y)))
+                .map(|(x, y)| camera.pixel_ray(x, y, w, h))
+                .collect(),
+        )
     }
     #[cfg(not(feature = "l01"))]
-    None::<fn(u32, u32) -> raylab::Ray>
+    None
 }
 
 fn luminance(c: Color) -> Float {

@@ -46,6 +46,9 @@ enum Frame {
     /// The student's code panicked (subject → judge): what the check would have
     /// written itself.
     Panic { message: String, file: String, line: u32 },
+    /// A call of the student's code for the subject to make (judge → subject, a hidden
+    /// check's: [`crate::remote`]), postcard-encoded.
+    Call { bytes: Vec<u8> },
 }
 
 /// How this process takes part in a check.
@@ -110,6 +113,14 @@ pub fn student<T: Serialize + DeserializeOwned>(f: impl FnOnce() -> T) -> T {
     }
 }
 
+/// The student's code run under [`raylab::stats::measure`]: its value and the rays it
+/// counted, as one value through [`student`] (in the judge the code does not run, so it counts
+/// nothing of its own).
+#[track_caller]
+pub fn measured<T: Serialize + DeserializeOwned>(f: impl FnOnce() -> T) -> (T, raylab::stats::RayStats) {
+    student(|| raylab::stats::measure(f))
+}
+
 thread_local! {
     /// Whether this thread is inside a `student` call's `f` (the subject's).
     static INSIDE: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
@@ -119,7 +130,6 @@ thread_local! {
 /// answers): `f()` in the judge (sent to the subject) and locally; in the
 /// subject, the judge's answer (`f` is not run).
 #[track_caller]
-#[allow(dead_code, reason = "for the scene and hidden checks, judged next (issue 18)")]
 pub fn decide<T: Serialize + DeserializeOwned>(f: impl FnOnce() -> T) -> T {
     let at = Location::caller();
     match mode() {
@@ -130,6 +140,16 @@ pub fn decide<T: Serialize + DeserializeOwned>(f: impl FnOnce() -> T) -> T {
             value
         }
         Mode::Subject(channel) => receive(channel, &site(at)),
+    }
+}
+
+/// Work only the judge does (it holds the snapshots and the hidden answers): `f()` in the
+/// judge and locally; in the subject nothing (`None`). What the subject must know of its result
+/// to take the same path it learns through [`decide`].
+pub fn judge_only<T>(f: impl FnOnce() -> T) -> Option<T> {
+    match mode() {
+        Mode::Subject(_) => None,
+        Mode::Direct | Mode::Judge(_) => Some(f()),
     }
 }
 
@@ -200,6 +220,51 @@ fn receive<T: DeserializeOwned>(channel: &Channel, site: &str) -> T {
         }
         Frame::Value { site: sent, .. } => out_of_step(&format!("a value from {sent} where {site} was due")),
         Frame::Panic { message, file, line } => conclude(&Outcome::Panicked { message, file, line }),
+        Frame::Call { .. } => out_of_step("a call where a value was due"),
+    }
+}
+
+/// Where the values of [`call`]s come from, as the frames name it.
+const CALL_SITE: &str = "a call of the judge's";
+
+/// `call` of the student's code (a hidden check's, [`crate::remote`]): made in place locally;
+/// in the judge, sent to the subject, which makes it and returns the value.
+pub fn call<T: DeserializeOwned>(call: crate::remote::Call) -> T {
+    match mode() {
+        Mode::Direct => {
+            let bytes = crate::remote::answer(call).unwrap_or_else(|e| panic!("{e}"));
+            postcard::from_bytes(&bytes).unwrap_or_else(|e| panic!("a call's value: {e}"))
+        }
+        Mode::Judge(channel) => {
+            let bytes = postcard::to_stdvec(&call).expect("a call encodes");
+            write_frame(channel, &Frame::Call { bytes }, true);
+            receive(channel, CALL_SITE)
+        }
+        // The subject's build has no hidden checks: nothing in it makes a call.
+        Mode::Subject(_) => std::process::exit(NO_VERDICT),
+    }
+}
+
+/// The subject of a hidden check (`raylab-checks serve`): makes each call the judge sends and
+/// returns its value, until the judge ends (with its verdict). A panic of the student's code goes
+/// to the judge through the panic hook, as in a check.
+pub fn serve_calls() -> Result<(), String> {
+    let Mode::Subject(channel) = mode() else { return Err("serve needs --channel".into()) };
+    loop {
+        let frame = match read_frame(channel) {
+            Ok(Some(frame)) => frame,
+            // The judge has its verdict.
+            Ok(None) => return Ok(()),
+            Err(e) => return Err(e),
+        };
+        let Frame::Call { bytes } = frame else {
+            return Err("the judge sent a frame other than a call".into());
+        };
+        let call: crate::remote::Call = postcard::from_bytes(&bytes).map_err(|e| format!("a call: {e}"))?;
+        match crate::remote::answer(call) {
+            Ok(bytes) => write_frame(channel, &Frame::Value { site: CALL_SITE.to_owned(), bytes }, true),
+            Err(message) => report_panic(&message, file!(), line!()),
+        }
     }
 }
 
@@ -234,8 +299,9 @@ fn out_of_step(what: &str) -> ! {
 
 /// The subject's side: connects to the judge at `address` before any of the
 /// student's code runs, and reports a panic of the student's code to it.
-pub fn connect(address: &str) -> Result<(), String> {
-    let stream = TcpStream::connect(address).map_err(|e| format!("the judge at {address}: {e}"))?;
+pub fn connect(address: &str, token: u64) -> Result<(), String> {
+    let mut stream = TcpStream::connect(address).map_err(|e| format!("the judge at {address}: {e}"))?;
+    stream.write_all(&raylab_protocol::hello(token)).map_err(|e| format!("the judge at {address}: {e}"))?;
     MODE.set(Mode::Subject(Channel::new(stream)?)).map_err(|_| "the mode is set twice".to_owned())
 }
 
@@ -250,14 +316,32 @@ pub fn report_panic(message: &str, file: &str, line: u32) {
     }
 }
 
-/// The judge's side: listens on a loopback port, prints `listening ADDR` on
-/// stdout for the driver, and takes the first connection as the subject's.
-pub fn serve() -> Result<(), String> {
+/// The judge's side: listens on a loopback port, prints `listening ADDR` on stdout for the
+/// driver, and takes the first connection that says `token` as the subject's. Another
+/// connection is dropped: one meant for an earlier judge on the same port (the driver's, sent
+/// to a judge that had already ended). The driver's word that the subject ended without
+/// connecting ends this judge without a verdict.
+pub fn serve(token: u64) -> Result<(), String> {
     let listener = TcpListener::bind("127.0.0.1:0").map_err(|e| format!("a loopback port: {e}"))?;
     let address = listener.local_addr().map_err(|e| e.to_string())?;
     let mut out = std::io::stdout().lock();
     writeln!(out, "{JUDGE_LISTENING}{address}").and_then(|()| out.flush()).map_err(|e| e.to_string())?;
-    let (stream, _) = listener.accept().map_err(|e| format!("the subject's connection: {e}"))?;
+    let stream = loop {
+        let (mut stream, _) = listener.accept().map_err(|e| format!("the subject's connection: {e}"))?;
+        // A connection that says nothing is not waited for long.
+        let _ = stream.set_read_timeout(Some(std::time::Duration::from_secs(2)));
+        let mut hello = [0u8; 8];
+        if stream.read_exact(&mut hello).is_err() {
+            continue;
+        }
+        if hello == raylab_protocol::hello(token) {
+            stream.set_read_timeout(None).map_err(|e| format!("the subject's connection: {e}"))?;
+            break stream;
+        }
+        if hello == raylab_protocol::no_subject(token) {
+            std::process::exit(NO_VERDICT);
+        }
+    };
     drop(listener);
     MODE.set(Mode::Judge(Channel::new(stream)?)).map_err(|_| "the mode is set twice".to_owned())
 }

@@ -5,9 +5,11 @@
 //! - `raylab-checks list` prints every check as JSON, with whether its code is built;
 //! - `raylab-checks run ID --verdict FILE --out DIR` runs one check and writes
 //!   its outcome to FILE (a panic writes the panic there first);
-//! - `raylab-checks judge ID --verdict FILE --out DIR` and `raylab-checks run ID
-//!   --channel ADDR --out DIR` run one check in two processes, the second the
-//!   student's code and the first the verdict (`judge.rs`);
+//! - `raylab-checks judge ID --out DIR` and `raylab-checks run ID --channel ADDR
+//!   --out DIR` run one check in two processes, the second the student's code
+//!   and the first the verdict (`judge.rs`); a hidden check's subject is
+//!   `raylab-checks serve --channel ADDR`, which makes the calls of the student's
+//!   code the judge asks for (`remote.rs`);
 //! - `render`, `bless` and `bench-rays` are the tools of `grader render`,
 //!   `grader bless` and `grader bench-rays`, present when every lecture is built.
 
@@ -20,6 +22,7 @@ mod images;
 mod judge;
 mod lectures;
 mod platform;
+mod remote;
 #[cfg(feature = "l03")]
 mod scene_objects;
 mod stages;
@@ -27,6 +30,8 @@ mod stages;
 mod tools;
 #[cfg(feature = "complete")]
 mod tracer;
+#[cfg(feature = "complete")]
+mod view3d;
 
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -58,8 +63,20 @@ enum Command {
         out: PathBuf,
         /// As the subject of a judged check: send the student's values to the judge listening
         /// at this loopback address, and write no verdict (src/judge.rs).
-        #[arg(long)]
+        #[arg(long, requires = "token")]
         channel: Option<String>,
+        /// The token the subject says first, as the judge's was given (`judge --token`).
+        #[arg(long, requires = "channel")]
+        token: Option<u64>,
+    },
+    /// As the subject of a hidden check, which runs in its judge alone: make the calls of the
+    /// student's code the judge at ADDR sends, and send their values back (src/remote.rs).
+    Serve {
+        #[arg(long)]
+        channel: String,
+        /// The token the subject says first (`judge --token`).
+        #[arg(long)]
+        token: u64,
     },
     /// Judge one check from the values a subject sends (`run ID --channel`): print
     /// `listening ADDR`, take the subject's connection, print `verdict JSON`.
@@ -69,6 +86,9 @@ enum Command {
         /// Where image checks write expected / yours / diff.
         #[arg(long)]
         out: PathBuf,
+        /// The subject's connection is the one that says this first (`run --token`): no other.
+        #[arg(long)]
+        token: u64,
     },
     /// Render a TOML or MIT 6.837 scene with the complete tracer.
     #[cfg(feature = "complete")]
@@ -98,15 +118,20 @@ fn main() -> ExitCode {
             infos.extend(images::infos());
             serde_json::to_string_pretty(&infos).map(|json| println!("{json}")).map_err(|e| e.to_string())
         }
-        Command::Run { id, verdict, out, channel } => match (channel, verdict) {
+        Command::Run { id, verdict, out, channel, token } => match (channel, verdict) {
             // Connected before any student code runs: the judge takes the first connection.
-            (Some(address), _) => judge::connect(&address).and_then(|()| run(&id, VerdictTo::Judge, &out)),
+            (Some(address), _) => judge::connect(&address, token.unwrap_or_default())
+                .and_then(|()| run(&id, VerdictTo::Judge, &out)),
             (None, Some(file)) => run(&id, VerdictTo::File(file), &out),
             (None, None) => Err("--verdict FILE or --channel ADDR".into()),
         },
-        Command::Judge { id, out } => {
+        Command::Serve { channel, token } => judge::connect(&channel, token).and_then(|()| {
+            install_panic_hook(Box::leak(Box::new(VerdictTo::Judge)));
+            judge::serve_calls()
+        }),
+        Command::Judge { id, out, token } => {
             platform::keep_others_out();
-            judge::serve().and_then(|()| run(&id, VerdictTo::Stdout, &out))
+            judge::serve(token).and_then(|()| run(&id, VerdictTo::Stdout, &out))
         }
         #[cfg(feature = "complete")]
         Command::Render(args) => tools::render::render(&args),
@@ -167,6 +192,25 @@ impl VerdictTo {
 fn run(id: &str, verdict: VerdictTo, out: &Path) -> Result<(), String> {
     // The panic hook holds it for the life of the process (a process per check).
     let verdict: &'static VerdictTo = Box::leak(Box::new(verdict));
+    install_panic_hook(verdict);
+    let result = if id.split('/').nth(1).is_some_and(|kind| matches!(kind, "image" | "geometry" | "final")) {
+        images::run(id, out)
+    } else {
+        lectures::run(id)
+    };
+    let Some(result) = result else {
+        return Err(format!("no check {id} in this build"));
+    };
+    let outcome = match result {
+        Ok(detail) => Outcome::Passed { detail, images: None },
+        Err(failure) => Outcome::Failed(failure),
+    };
+    verdict.write(&outcome)
+}
+
+/// Caps the process's memory and records any panic as the outcome (written where `verdict` says; a
+/// subject reports it to its judge).
+fn install_panic_hook(verdict: &'static VerdictTo) {
     // Best effort: where limits cannot be set, the grader's time limit still holds.
     platform::limit_memory(MEMORY_LIMIT);
     let default_hook = std::panic::take_hook();
@@ -186,17 +230,4 @@ fn run(id: &str, verdict: VerdictTo, out: &Path) -> Result<(), String> {
         }
         default_hook(info);
     }));
-    let result = if id.split('/').nth(1).is_some_and(|kind| matches!(kind, "image" | "geometry" | "final")) {
-        images::run(id, out)
-    } else {
-        lectures::run(id)
-    };
-    let Some(result) = result else {
-        return Err(format!("no check {id} in this build"));
-    };
-    let outcome = match result {
-        Ok(detail) => Outcome::Passed { detail, images: None },
-        Err(failure) => Outcome::Failed(failure),
-    };
-    verdict.write(&outcome)
 }

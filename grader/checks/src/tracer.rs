@@ -4,11 +4,10 @@
 //! scene has enough primitives to need one, and lecture 10's textures.
 
 use l01_transforms::Camera;
-use l08_ray_tree::{RayTree, TraceSettings, World, trace_recorded};
-use l10_textures_sampling::{Filter, Pattern, render_supersampled, surface_color};
-use raylab::scene::Material;
+use l08_ray_tree::{RayTree, SurfaceMaterial, TraceSettings, World, trace_recorded};
+use l10_textures_sampling::{Filter, Pattern, render_supersampled, surface_material};
 use raylab::stats::{RayStats, measure};
-use raylab::{Color, Hit, Image, Scene};
+use raylab::{Color, Image, Scene};
 
 /// Arbitrary output variables.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
@@ -58,8 +57,8 @@ pub fn render_scene(
         Some(Aov::Depth) => measure(|| l02_ray_casting::depth_image(&camera, &objects, w, h)),
         Some(Aov::Normal) => measure(|| l02_ray_casting::normal_image(&camera, &objects, w, h)),
         None => {
-            let surface = |hit: &Hit, material: &Material| surface_color(scene, hit, material);
-            let world = World::new(scene, objects).with_surface(&surface);
+            let surface: SurfaceMaterial = &|hit, material| surface_material(scene, hit, material);
+            let world = World::new(scene, objects).with_surface(surface);
             if sampling.spp == 1 && sampling.pattern == Pattern::Regular {
                 l08_ray_tree::render(&world, &camera, w, h, settings)
             } else {
@@ -82,6 +81,6 @@ pub fn pixel_tree(
     let camera = Camera::from_scene(&scene.camera, scene.width, scene.height).map_err(|e| e.to_string())?;
     let objects = l09_acceleration::intersector_for(&scene.objects);
     let ray = camera.pixel_ray(x, y, scene.width, scene.height);
-    let surface = |hit: &Hit, material: &Material| surface_color(scene, hit, material);
-    Ok(trace_recorded(&World::new(scene, objects.as_ref()).with_surface(&surface), &ray, settings))
+    let surface: SurfaceMaterial = &|hit, material| surface_material(scene, hit, material);
+    Ok(trace_recorded(&World::new(scene, objects.as_ref()).with_surface(surface), &ray, settings))
 }

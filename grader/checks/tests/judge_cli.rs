@@ -17,12 +17,16 @@ enum Frame {
     Panic { message: String, file: String, line: u32 },
 }
 
+/// The token the tests' judges are given (`judge --token`).
+const TOKEN: u64 = 0x5ca1_ab1e_0000_0001;
+
 /// A judge of check `id`, and the address it listens on.
 fn judge(id: &str) -> (Child, String) {
     let out = std::env::temp_dir().join(format!("raylab-judge-{}", std::process::id()));
     let mut child = Command::new(env!("CARGO_BIN_EXE_raylab-checks"))
         .args(["judge", id, "--out"])
         .arg(&out)
+        .args(["--token", &TOKEN.to_string()])
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
         .spawn()
@@ -33,10 +37,48 @@ fn judge(id: &str) -> (Child, String) {
     (child, address)
 }
 
+/// A connection to the judge at `address` that says `hello` first.
+fn connect(address: &str, hello: [u8; 8]) -> TcpStream {
+    let mut stream = TcpStream::connect(address).unwrap();
+    stream.write_all(&hello).unwrap();
+    stream
+}
+
+/// The checks' own subject of `id`, connected to the judge at `address` with `token`.
+fn own_subject(id: &str, address: &str, token: u64) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_raylab-checks"))
+        .args(["run", id, "--channel", address, "--token", &token.to_string(), "--out"])
+        .arg(std::env::temp_dir())
+        .output()
+        .unwrap()
+}
+
+/// The verdict of check `id` run locally, in one process (`run ID --verdict FILE`): what the
+/// judged run must agree with.
+fn local_verdict(id: &str) -> String {
+    let file = std::env::temp_dir().join(format!("raylab-local-verdict-{}.json", std::process::id()));
+    let out = Command::new(env!("CARGO_BIN_EXE_raylab-checks"))
+        .args(["run", id, "--verdict"])
+        .arg(&file)
+        .arg("--out")
+        .arg(std::env::temp_dir())
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let verdict = std::fs::read_to_string(&file).unwrap();
+    let _ = std::fs::remove_file(&file);
+    assert!(verdict.starts_with(r#"{"status":"passed""#), "{verdict}");
+    verdict
+}
+
 fn send(stream: &mut TcpStream, frame: &Frame) {
+    try_send(stream, frame).unwrap();
+}
+
+fn try_send(stream: &mut TcpStream, frame: &Frame) -> std::io::Result<()> {
     let bytes = postcard::to_stdvec(frame).unwrap();
-    stream.write_all(&(bytes.len() as u32).to_le_bytes()).unwrap();
-    stream.write_all(&bytes).unwrap();
+    stream.write_all(&(bytes.len() as u32).to_le_bytes())?;
+    stream.write_all(&bytes)
 }
 
 /// The judge's exit code and the verdict line it printed, if any.
@@ -51,28 +93,55 @@ fn verdict(mut child: Child) -> (Option<i32>, Option<String>) {
 #[test]
 fn the_checks_own_subject_is_judged_passed() {
     let (judging, address) = judge("02/hit_sphere_stable/unit");
-    let subject = Command::new(env!("CARGO_BIN_EXE_raylab-checks"))
-        .args(["run", "02/hit_sphere_stable/unit", "--channel", &address, "--out"])
-        .arg(std::env::temp_dir())
-        .output()
-        .unwrap();
+    let subject = own_subject("02/hit_sphere_stable/unit", &address, TOKEN);
     assert!(subject.status.success(), "{}", String::from_utf8_lossy(&subject.stderr));
     let (code, verdict) = verdict(judging);
     assert_eq!(code, Some(0));
-    assert_eq!(verdict.as_deref(), Some(r#"{"status":"passed","detail":"7 cases"}"#));
+    assert_eq!(verdict, Some(local_verdict("02/hit_sphere_stable/unit")));
 }
 
 #[test]
 fn a_subject_that_ends_at_once_leaves_no_verdict() {
     let (judging, address) = judge("02/hit_sphere_stable/unit");
-    drop(TcpStream::connect(&address).unwrap());
+    drop(connect(&address, raylab_protocol::hello(TOKEN)));
     assert_eq!(verdict(judging), (Some(3), None));
+}
+
+/// The driver's word that the subject ended without connecting: the judge stops waiting.
+#[test]
+fn no_subject_from_the_driver_ends_the_judge_without_a_verdict() {
+    let (judging, address) = judge("02/hit_sphere_stable/unit");
+    drop(connect(&address, raylab_protocol::no_subject(TOKEN)));
+    assert_eq!(verdict(judging), (Some(3), None));
+}
+
+/// A judge's loopback port can be one an earlier judge had: the driver's word to that judge, a
+/// connection that says nothing, and a subject of another judge's all reach this one first. It
+/// drops them and takes its own subject's (CI once graded a check "crashed" when a judge took the
+/// driver's word to the judge before it for its subject).
+#[test]
+fn connections_meant_for_another_judge_are_not_taken_for_the_subject() {
+    let (judging, address) = judge("02/hit_sphere_stable/unit");
+    let other = TOKEN ^ 0xff;
+    drop(connect(&address, raylab_protocol::no_subject(other)));
+    drop(TcpStream::connect(&address).unwrap());
+    let mut stray = connect(&address, raylab_protocol::hello(other));
+    // A stray subject's forged value is not read either. The judge may have dropped the stray
+    // connection already (it read the wrong token), so the write may fail with a broken pipe or
+    // a reset: either way the value does not reach it.
+    let bytes = postcard::to_stdvec(&Option::<u8>::None).unwrap();
+    let _ = try_send(&mut stray, &Frame::Value { site: "src/forged.rs:1".into(), bytes });
+    let subject = own_subject("02/hit_sphere_stable/unit", &address, TOKEN);
+    assert!(subject.status.success(), "{}", String::from_utf8_lossy(&subject.stderr));
+    let (code, verdict) = verdict(judging);
+    assert_eq!(code, Some(0));
+    assert_eq!(verdict, Some(local_verdict("02/hit_sphere_stable/unit")));
 }
 
 #[test]
 fn a_value_from_another_call_site_fails_the_check() {
     let (judging, address) = judge("02/hit_sphere_stable/unit");
-    let mut stream = TcpStream::connect(&address).unwrap();
+    let mut stream = connect(&address, raylab_protocol::hello(TOKEN));
     // The right answer to the first case (t = 4 …), but claimed by a call the check never makes.
     let bytes = postcard::to_stdvec(&Option::<u8>::None).unwrap();
     send(&mut stream, &Frame::Value { site: "src/forged.rs:1".into(), bytes });
@@ -86,7 +155,7 @@ fn a_value_from_another_call_site_fails_the_check() {
 #[test]
 fn a_value_that_does_not_decode_fails_the_check() {
     let (judging, address) = judge("02/hit_sphere_stable/unit");
-    let mut stream = TcpStream::connect(&address).unwrap();
+    let mut stream = connect(&address, raylab_protocol::hello(TOKEN));
     stream.write_all(&[7, 0, 0, 0, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff]).unwrap();
     let (code, verdict) = verdict(judging);
     assert_eq!(code, Some(0));
@@ -96,7 +165,7 @@ fn a_value_that_does_not_decode_fails_the_check() {
 #[test]
 fn a_reported_panic_is_judged_as_the_students_panic() {
     let (judging, address) = judge("02/hit_sphere_stable/unit");
-    let mut stream = TcpStream::connect(&address).unwrap();
+    let mut stream = connect(&address, raylab_protocol::hello(TOKEN));
     let panic = Frame::Panic {
         message: "02/hit_sphere_stable: Book §2.4".into(),
         file: "lectures/02-ray-casting/src/sphere.rs".into(),

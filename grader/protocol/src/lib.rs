@@ -9,6 +9,20 @@ use serde::{Deserialize, Serialize};
 /// subject is to connect to (`raylab-checks run ID --channel ADDR`).
 pub const JUDGE_LISTENING: &str = "listening ";
 
+/// The first eight bytes a subject sends its judge: the token the driver gave them both
+/// (`--token`). A judge takes the connection that sends it for the subject's, and no other: a
+/// connection meant for an earlier judge whose loopback port this one was given is not mistaken
+/// for its subject.
+pub fn hello(token: u64) -> [u8; 8] {
+    token.to_le_bytes()
+}
+
+/// What the driver sends a judge instead, once the subject has ended without connecting: the
+/// judge stops waiting and ends with [`NO_VERDICT`].
+pub fn no_subject(token: u64) -> [u8; 8] {
+    (!token).to_le_bytes()
+}
+
 /// How a judge's verdict line starts: this, then the outcome as JSON.
 pub const JUDGE_VERDICT: &str = "verdict ";
 

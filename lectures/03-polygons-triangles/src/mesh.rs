@@ -89,14 +89,22 @@ mod tests {
 
     #[test]
     fn mesh_uvs_and_normals_are_interpolated() {
-        // uv = the vertex's (x, y) scaled by 2: the hit at (0.75, 0.25) has uv (1.5, 0.5)
-        // (the interpolation is exact for these dyadic values).
+        // uv = 2·(x, y) + (1, 3) at each vertex, an affine function of the position, so the
+        // interpolated uv at (x, y) is 2·(x, y) + (1, 3) on either triangle (exact for these
+        // dyadic values). The points' weights (1 − β − γ, β, γ) differ, and no corner's uv is
+        // zero, so each weight must go with its own corner.
         let mut mesh = quad();
-        mesh.uvs = mesh.positions.iter().map(|p| 2.0 * p.truncate()).collect();
+        mesh.uvs = mesh.positions.iter().map(|p| 2.0 * p.truncate() + Vec2::new(1.0, 3.0)).collect();
+        // (0.875, 0.25) in (0, x̂, x̂ + ŷ): weights (0.125, 0.625, 0.25) of (1, 3), (3, 3), (3, 5).
+        let hit = hit_mesh(&down_at(0.875, 0.25), &mesh, Interval::POSITIVE).unwrap();
+        assert_eq!(hit.uv, Vec2::new(2.75, 3.5));
+        // (0.125, 0.75) in (0, x̂ + ŷ, ŷ): weights (0.25, 0.125, 0.625) of (1, 3), (3, 5), (1, 5).
+        let hit = hit_mesh(&down_at(0.125, 0.75), &mesh, Interval::POSITIVE).unwrap();
+        assert_eq!(hit.uv, Vec2::new(1.25, 4.5));
         // Normals tilting toward +x on the right side: n = (x, 0, 1) normalised per vertex.
         mesh.normals = mesh.positions.iter().map(|p| Vec3::new(p.x, 0.0, 1.0).normalize()).collect();
         let hit = hit_mesh(&down_at(0.75, 0.25), &mesh, Interval::POSITIVE).unwrap();
-        assert_eq!(hit.uv, Vec2::new(1.5, 0.5));
+        assert_eq!(hit.uv, Vec2::new(2.5, 3.5));
         // Blend with weights (1 − β − γ, β, γ) = (0.25, 0.5, 0.25) of n₀ = ẑ and
         // n₁ = n₂ = (1, 0, 1)/√2, normalised.
         let (n0, n1) = (Vec3::Z, Vec3::new(1.0, 0.0, 1.0).normalize());

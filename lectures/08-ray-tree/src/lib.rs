@@ -23,4 +23,4 @@ pub use ray_tree::{RayKind, RayTree, trace_recorded};
 pub use render::{render, render_scene};
 pub use settings::TraceSettings;
 pub use trace::trace;
-pub use world::{SurfaceColor, World};
+pub use world::{SurfaceMaterial, World};

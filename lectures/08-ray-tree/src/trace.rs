@@ -29,9 +29,10 @@ use crate::world::World;
 ///
 /// or the scene's background when nothing is hit. I_local is lecture 06's
 /// shading with shadow rays, or lecture 05's without them when
-/// `settings.shadows` is off, both with the surface's diffuse colour k_d
-/// from [`World::diffuse`] (the material's own, or its texture's there when
-/// the world has a surface colour). Every ray looks in (0, ∞); `ray.dir` need not
+/// `settings.shadows` is off. Every property (k_d, k_s, k_r, k_t, η) is the
+/// surface's material at the hit, [`World::material_at`]: the scene's, or
+/// its texture's there when the world has a surface material (lecture 10).
+/// Every ray looks in (0, ∞); `ray.dir` need not
 /// be unit (it is normalised for the shading and the children, whose
 /// directions are unit).
 ///
@@ -112,12 +113,13 @@ fn trace_ray(
         return world.scene.background;
     };
     let scene = world.scene;
-    let material = &scene.materials[hit.material];
+    // The surface's material there (a texture's, lecture 10), borrowed when nothing varies.
+    let material = world.material_at(&hit, &scene.materials[hit.material]);
+    let material = material.as_ref();
     let dir = ray.dir.normalize();
 
-    // Local shading with the surface's colour there (a texture's, lecture 10): with shadow
-    // rays (06), or every light unblocked (05).
-    let diffuse = world.diffuse(&hit, material);
+    // Local shading: with shadow rays (06), or every light unblocked (05).
+    let diffuse = material.diffuse;
     let mut color = if settings.shadows {
         let surface = Surface { material, diffuse, hit, v: -dir, origin: ray.origin };
         shade_with_shadows(

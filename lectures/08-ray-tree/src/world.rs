@@ -1,22 +1,26 @@
 //! What a ray is traced through: the scene's description and a way to
 //! intersect its objects.
 
+use std::borrow::Cow;
 use std::fmt;
 
 use raylab::scene::Material;
-use raylab::{Color, Hit, Intersector, Scene};
+use raylab::{Hit, Intersector, Scene};
 
-/// How a surface is coloured at a hit: the diffuse colour k_d (also the
-/// ambient kₐ) of `material` at `hit`. Lecture 10 supplies one that reads
-/// the material's texture; without one, k_d is `material.diffuse`.
-/// Book: §10.5 Textures in the tracer.
-pub type SurfaceColor<'a> = &'a (dyn Fn(&Hit, &Material) -> Color + Sync);
+/// How a surface looks at a hit: the material there, given the scene's
+/// material the hit names (`material`). Lecture 10 supplies one that reads
+/// the material's texture (a diffuse colour that varies over the surface, or
+/// two materials blended by a solid pattern); without one, the scene's
+/// material holds everywhere. Borrowed where nothing varies, so an
+/// untextured hit costs no copy. Book: §10.5 Textures in the tracer.
+pub type SurfaceMaterial<'a> = &'a (dyn for<'m> Fn(&Hit, &'m Material) -> Cow<'m, Material> + Sync);
 
 /// The scene (lights, materials, background, ambient light) with the
 /// [`Intersector`] that finds hits among its objects: lecture 04's
 /// `BruteForce` or lecture 09's BVH, so the tracer works with either; and,
-/// optionally, a [`SurfaceColor`] that varies k_d over the surfaces (lecture
-/// 10's textures), which the tracer asks through [`World::diffuse`].
+/// optionally, a [`SurfaceMaterial`] that varies the materials over the
+/// surfaces (lecture 10's textures), which the tracer asks through
+/// [`World::material_at`].
 ///
 /// `objects` must answer for `scene.objects`: every hit's `material` indexes
 /// `scene.materials` (the loaders guarantee it for scenes from files).
@@ -25,8 +29,8 @@ pub type SurfaceColor<'a> = &'a (dyn Fn(&Hit, &Material) -> Color + Sync);
 pub struct World<'a> {
     pub scene: &'a Scene,
     pub objects: &'a dyn Intersector,
-    /// `None`: every surface has its material's `diffuse` colour.
-    pub surface: Option<SurfaceColor<'a>>,
+    /// `None`: every surface is its scene material everywhere.
+    pub surface: Option<SurfaceMaterial<'a>>,
 }
 
 impl<'a> World<'a> {
@@ -34,17 +38,18 @@ impl<'a> World<'a> {
         Self { scene, objects, surface: None }
     }
 
-    /// The same world with surfaces coloured by `surface`.
-    pub fn with_surface(self, surface: SurfaceColor<'a>) -> Self {
+    /// The same world with its surfaces' materials given by `surface`.
+    pub fn with_surface(self, surface: SurfaceMaterial<'a>) -> Self {
         Self { surface: Some(surface), ..self }
     }
 
-    /// The diffuse colour k_d of `material` at `hit`: the [`SurfaceColor`]'s
-    /// answer if the world has one, else `material.diffuse`.
-    pub fn diffuse(&self, hit: &Hit, material: &Material) -> Color {
+    /// The material of a surface at `hit`, `material` the scene's material
+    /// the hit names: the [`SurfaceMaterial`]'s answer if the world has one,
+    /// else `material` itself.
+    pub fn material_at<'m>(&self, hit: &Hit, material: &'m Material) -> Cow<'m, Material> {
         match self.surface {
             Some(surface) => surface(hit, material),
-            None => material.diffuse,
+            None => Cow::Borrowed(material),
         }
     }
 }
@@ -66,27 +71,29 @@ mod tests {
     use crate::testing::{directional, matte, scene, sphere, v};
     use crate::{TraceSettings, trace, trace_recorded};
     use l04_quadrics_transforms::BruteForce;
-    use raylab::{Ray, Vec3};
+    use raylab::{Color, Ray, Vec3};
 
     #[test]
-    fn a_surface_colour_replaces_the_diffuse_colour_everywhere() {
+    fn a_surface_material_replaces_the_scene_material_everywhere() {
         // A white matte sphere head-on, lit along the view by a white light, ambient 0.1: the
         // hit (0, 0, −4) has N·L = 1, so the colour is k_d·(0.1 + 1) = 1.1·k_d. With a surface
-        // colour that answers (0.5, 0.25, 0) for k_d: 1.1·(0.5, 0.25, 0), exactly as a material
-        // of that colour gives (the same products), with or without shadow rays, recorded too.
+        // material of k_d = (0.5, 0.25, 0): 1.1·(0.5, 0.25, 0), exactly as a scene material of
+        // that colour gives (the same products), with or without shadow rays, recorded too.
+        // Its k_r counts too: a mirror of k_r = ½ facing the empty background (0.2) adds ½·0.2.
         let s = scene(
             vec![sphere(v(0.0, 0.0, -5.0), 1.0, 0)],
             vec![matte(Color::ONE)],
             vec![directional(Vec3::Z, Color::ONE)],
-            Color::ZERO,
+            Color::splat(0.2),
             Color::splat(0.1),
         );
         let kd = v(0.5, 0.25, 0.0);
+        let there = Material { diffuse: kd, reflective: Color::splat(0.5), ..s.materials[0].clone() };
         let mut tinted = s.clone();
-        tinted.materials[0].diffuse = kd;
+        tinted.materials[0] = there.clone();
         let objects = BruteForce::new(&s.objects);
-        let surface = |_: &Hit, _: &Material| kd;
-        let world = World::new(&s, &objects).with_surface(&surface);
+        let surface: SurfaceMaterial = &|_, _| Cow::Owned(there.clone());
+        let world = World::new(&s, &objects).with_surface(surface);
         let plain = World::new(&tinted, &objects);
         let ray = Ray::new(Vec3::ZERO, -Vec3::Z);
         for shadows in [true, false] {
@@ -94,13 +101,11 @@ mod tests {
             let expected = trace(&plain, &ray, 0, 1.0, &settings);
             assert_eq!(trace(&world, &ray, 0, 1.0, &settings), expected);
             assert_eq!(trace_recorded(&world, &ray, &settings).0, expected);
-            assert_eq!(expected, Color::splat(1.1) * kd);
+            assert_eq!(expected, Color::splat(1.1) * kd + Color::splat(0.5 * 0.2));
         }
-        // Without a surface colour, the material's own.
-        assert_eq!(
-            World::new(&s, &objects)
-                .diffuse(&objects.closest_hit(&ray, raylab::Interval::POSITIVE).unwrap(), &s.materials[0]),
-            Color::ONE
-        );
+        // Without a surface material, the scene's own, borrowed.
+        let hit = objects.closest_hit(&ray, raylab::Interval::POSITIVE).unwrap();
+        let own = World::new(&s, &objects).material_at(&hit, &s.materials[0]);
+        assert!(matches!(own, Cow::Borrowed(m) if std::ptr::eq(m, &s.materials[0])));
     }
 }

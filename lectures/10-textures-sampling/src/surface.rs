@@ -1,18 +1,20 @@
-//! Textures in the tracer: the texture coordinates of any hit, the diffuse
-//! colour a material's texture gives there, and a whole textured,
-//! supersampled render of a scene.
+//! Textures in the tracer: the texture coordinates of any hit, the material
+//! a texture makes there, and a whole textured, supersampled render of a scene.
+
+use std::borrow::Cow;
 
 use l01_transforms::{Camera, transform_point};
-use l08_ray_tree::{TraceSettings, World};
+use l08_ray_tree::{SurfaceMaterial, TraceSettings, World};
 use l09_acceleration::intersector_for;
 use raylab::math::consts::TAU;
-use raylab::scene::{Material, Shape, Texture};
+use raylab::scene::{Material, Shape, SolidPattern, Texture};
 use raylab::stats::RayStats;
-use raylab::{Color, Hit, Image, Scene, Vec2, Vec3};
+use raylab::{Color, Float, Hit, Image, Scene, Vec2, Vec3};
 
 use crate::bilinear::bilinear;
 use crate::checker::{checker, checker_3d};
 use crate::filter::Filter;
+use crate::noise::{fractal_noise, marble, wood};
 use crate::patterns::Pattern;
 use crate::supersample::render_supersampled;
 use crate::uv::{plane_uv, sphere_uv};
@@ -82,30 +84,89 @@ fn box_uv(p: Vec3, min: Vec3, max: Vec3) -> Vec2 {
     }
 }
 
-/// The diffuse colour k_d of `material` at `hit`: its `diffuse` without a
-/// texture; with one,
-/// - `Checker { scale, other }`: [`checker`] at [`surface_uv`], `diffuse` and `other`;
-/// - `SolidChecker { pattern_from_world, other }`: [`checker_3d`] of the hit
-///   point in pattern space, unit cubes, `diffuse` and `other`;
-/// - `Image`: [`bilinear`] at [`surface_uv`].
+/// The material of a surface at `hit`, `material` the scene's material the
+/// hit names: `material` itself without a texture (borrowed); with one, an
+/// untextured copy whose properties are the texture's there:
+/// - `Checker { scale, other }`: k_d is [`checker`] at [`surface_uv`],
+///   `diffuse` and `other`;
+/// - `Image`: k_d is [`bilinear`] at [`surface_uv`];
+/// - `Solid { pattern_from_world, pattern, a, b }`: the blend value s of
+///   [`solid_value`] at the hit point in pattern space, and every colour
+///   (1 − s)·a's + s·b's, a and b each the material at `hit` first (either
+///   may be textured); exponent, model and η are a's. Where s is exactly 0
+///   or 1 (every hit of a checker), the one material alone: a or b as this
+///   function makes it, borrowed when untextured.
 ///
-/// What lecture 08's tracer asks through `World::with_surface`. Glue.
-/// Book: §10.5 Textures in the tracer.
-pub fn surface_color(scene: &Scene, hit: &Hit, material: &Material) -> Color {
-    match &material.texture {
-        None => material.diffuse,
+/// What lecture 08's tracer asks through `World::with_surface`. A copy has
+/// no name (no allocation per hit). Glue. Book: §10.5 Textures in the tracer.
+pub fn surface_material<'m>(scene: &Scene, hit: &Hit, material: &'m Material) -> Cow<'m, Material> {
+    let diffuse = match &material.texture {
+        None => return Cow::Borrowed(material),
         Some(Texture::Checker { scale, other }) => {
             checker(surface_uv(scene, hit), *scale, material.diffuse, *other)
         }
-        Some(Texture::SolidChecker { pattern_from_world, other }) => {
-            checker_3d(transform_point(pattern_from_world, hit.point), 1.0, material.diffuse, *other)
-        }
         Some(Texture::Image { image, .. }) => bilinear(image, surface_uv(scene, hit)),
+        Some(Texture::Solid { pattern_from_world, pattern, a, b }) => {
+            let s = solid_value(pattern, transform_point(pattern_from_world, hit.point));
+            // All of one material (a checker's every hit): that one alone, borrowed if untextured.
+            if s == 0.0 {
+                return surface_material(scene, hit, a);
+            } else if s == 1.0 {
+                return surface_material(scene, hit, b);
+            }
+            let (a, b) = (surface_material(scene, hit, a), surface_material(scene, hit, b));
+            let mix = |x: Color, y: Color| (1.0 - s) * x + s * y;
+            return Cow::Owned(Material {
+                diffuse: mix(a.diffuse, b.diffuse),
+                specular: mix(a.specular, b.specular),
+                reflective: mix(a.reflective, b.reflective),
+                transparent: mix(a.transparent, b.transparent),
+                ..untextured(&a)
+            });
+        }
+    };
+    Cow::Owned(Material { diffuse, ..untextured(material) })
+}
+
+/// `material`'s properties without its name and texture.
+fn untextured(material: &Material) -> Material {
+    Material {
+        name: String::new(),
+        diffuse: material.diffuse,
+        specular: material.specular,
+        exponent: material.exponent,
+        model: material.model,
+        reflective: material.reflective,
+        transparent: material.transparent,
+        ior: material.ior,
+        texture: None,
     }
 }
 
+/// The blend value s ∈ [0, 1] of a solid `pattern` at p′ (pattern space):
+/// - `Checker`: 0 in the unit cube (0, 0, 0) and every other one, 1 in the
+///   rest ([`checker_3d`], scale 1);
+/// - `Noise { octaves }`: clamp((N + 1)/2, 0, 1), N the [`fractal_noise`];
+/// - `Marble { … }`: [`marble`]; `Wood { … }`: [`wood`].
+///
+/// 6.837's `Noise` maps its noise to a blend as well; the exact map of its
+/// handout is not known here, so raylab takes N's usual range [−1, 1] to
+/// [0, 1] and clamps the rare values beyond it. Where the pattern has no
+/// value, past Float's range (a pattern space scaled by 10³⁸: the phase of
+/// a sine or the point itself infinite), the blend is ½, the mean of both
+/// materials, never NaN. Glue. Book: §10.3 Solid textures.
+pub fn solid_value(pattern: &SolidPattern, p: Vec3) -> Float {
+    let s = match *pattern {
+        SolidPattern::Checker => checker_3d(p, 1.0, Color::ZERO, Color::ONE).x,
+        SolidPattern::Noise { octaves } => ((fractal_noise(p, octaves) + 1.0) / 2.0).clamp(0.0, 1.0),
+        SolidPattern::Marble { octaves, frequency, amplitude } => marble(p, octaves, frequency, amplitude),
+        SolidPattern::Wood { octaves, frequency, amplitude } => wood(p, octaves, frequency, amplitude),
+    };
+    if s.is_finite() { s } else { 0.5 }
+}
+
 /// `scene` rendered at its own size through its own camera, textured
-/// ([`surface_color`]) and supersampled ([`render_supersampled`]), its
+/// ([`surface_material`]) and supersampled ([`render_supersampled`]), its
 /// objects behind the intersector the scene requires (lecture 09's
 /// `intersector_for`: a BVH only for many primitives). An error (never a
 /// panic) when the camera cannot be built. Book: §10.8 Supersampling.
@@ -119,8 +180,8 @@ pub fn render_textured(
 ) -> Result<(Image, RayStats), String> {
     let camera = Camera::from_scene(&scene.camera, scene.width, scene.height).map_err(|e| e.to_string())?;
     let objects = intersector_for(&scene.objects);
-    let surface = |hit: &Hit, material: &Material| surface_color(scene, hit, material);
-    let world = World::new(scene, objects.as_ref()).with_surface(&surface);
+    let surface: SurfaceMaterial = &|hit, material| surface_material(scene, hit, material);
+    let world = World::new(scene, objects.as_ref()).with_surface(surface);
     Ok(render_supersampled(&world, &camera, scene.width, scene.height, settings, spp, pattern, filter, seed))
 }
 
@@ -207,14 +268,17 @@ mod tests {
         // A uv checker of 2 cells per unit: (0.1, 0, −0.1) is uv (0.1, 0.1), cell (0, 0): white;
         // (0.6, 0, −0.1) is cell (1, 0): red.
         let s = scene_of(floor.clone(), material(Texture::Checker { scale: 2.0, other: RED }));
-        let color = |s: &Scene, x, z| surface_color(s, &hit_of(s, down(x, z)), &s.materials[0]);
+        let color = |s: &Scene, x, z| surface_material(s, &hit_of(s, down(x, z)), &s.materials[0]).diffuse;
         assert_eq!((color(&s, 0.1, -0.1), color(&s, 0.6, -0.1)), (WHITE, RED));
         // A solid checker of cubes ½ wide (pattern = 2·world), the floor y = 0 lifted to 0.25
         // inside a layer: (0.1, 0.25, 0.1) → (0.2, 0.5, 0.2), cube (0, 0, 0): white;
         // (−0.1, 0.25, 0.1) → cube (−1, 0, 0): red.
         let lifted = vec![object(Shape::Plane { normal: Vec3::Y, offset: 0.25 }, None)];
         let pattern_from_world = Mat4::from_scale(Vec3::splat(2.0));
-        let s = scene_of(lifted, material(Texture::SolidChecker { pattern_from_world, other: RED }));
+        let (a, b) =
+            (Box::new(material(Texture::Checker { scale: 1.0, other: WHITE })), Box::new(matte(RED)));
+        let solid = Texture::Solid { pattern_from_world, pattern: SolidPattern::Checker, a, b };
+        let s = scene_of(lifted, material(solid));
         assert_eq!((color(&s, 0.1, 0.1), color(&s, -0.1, 0.1)), (WHITE, RED));
         // An image, 2 × 1: left half black, right half red; uv (0.75, ·) is the centre of the
         // right pixel (x = 0.75·2 − ½ = 1): red exactly; the floor point (0.75, 0, −0.5).
@@ -222,8 +286,72 @@ mod tests {
         let texture = Texture::Image { file: "two.png".into(), image: std::sync::Arc::new(image) };
         let s = scene_of(floor, material(texture));
         assert_eq!(color(&s, 0.75, -0.5), RED);
-        // No texture: the material's diffuse colour.
-        assert_eq!(surface_color(&s, &hit_of(&s, down(0.0, 0.0)), &Material::default()), WHITE);
+        // No texture: the material itself, borrowed.
+        let plain = Material::default();
+        let there = surface_material(&s, &hit_of(&s, down(0.0, 0.0)), &plain);
+        assert!(matches!(there, Cow::Borrowed(m) if std::ptr::eq(m, &plain)));
+    }
+
+    fn matte(diffuse: Color) -> Material {
+        Material { diffuse, ..Material::default() }
+    }
+
+    #[test]
+    fn a_solid_texture_blends_every_colour_of_its_two_materials() {
+        // Marble with no octaves on the floor y = 0: s = (1 + sin(f·x))/2, f = π. At x = ½,
+        // s = 1 (b); at x = −½, s = 0 (a); at x = 0, s = ½: every colour halfway, exponent a's.
+        use raylab::math::consts::PI;
+        let a =
+            Material { diffuse: RED, reflective: Color::splat(0.1), exponent: 8.0, ..Material::default() };
+        let b = Material {
+            diffuse: Color::new(0.0, 0.0, 1.0),
+            reflective: Color::splat(0.3),
+            exponent: 8.0,
+            ..a.clone()
+        };
+        let pattern = SolidPattern::Marble { octaves: 0, frequency: PI, amplitude: 3.0 };
+        let texture = Texture::Solid {
+            pattern_from_world: Mat4::IDENTITY,
+            pattern,
+            a: Box::new(a.clone()),
+            b: Box::new(b.clone()),
+        };
+        let floor = vec![object(Shape::Plane { normal: Vec3::Y, offset: 0.0 }, None)];
+        let s = scene_of(floor, Material { texture: Some(texture), ..a.clone() });
+        let at = |x: Float| {
+            surface_material(&s, &hit_of(&s, Ray::new(Vec3::new(x, 5.0, 0.0), -Vec3::Y)), &s.materials[0])
+                .into_owned()
+        };
+        let (left, right, middle) = (at(-0.5), at(0.5), at(0.0));
+        assert_abs_diff_eq!(left.diffuse, RED, epsilon = 4.0 * EPS);
+        assert_abs_diff_eq!(right.diffuse, b.diffuse, epsilon = 4.0 * EPS);
+        assert_abs_diff_eq!(middle.diffuse, Color::new(0.5, 0.0, 0.5), epsilon = 4.0 * EPS);
+        assert_abs_diff_eq!(middle.reflective, Color::splat(0.2), epsilon = 4.0 * EPS);
+        assert_eq!((middle.exponent, middle.texture, middle.name), (8.0, None, String::new()));
+    }
+
+    #[test]
+    fn solid_values_stay_in_zero_one() {
+        let patterns = [
+            SolidPattern::Checker,
+            SolidPattern::Noise { octaves: 8 },
+            SolidPattern::Marble { octaves: 5, frequency: 3.0, amplitude: 4.0 },
+            SolidPattern::Wood { octaves: 3, frequency: 6.0, amplitude: 2.0 },
+        ];
+        let mut rng = raylab::random::Rng::new(4);
+        for _ in 0..2000 {
+            let p = rng.in_cube(10.0);
+            for pattern in &patterns {
+                let s = solid_value(pattern, p);
+                assert!((0.0..=1.0).contains(&s), "{pattern:?} at {p}: {s}");
+            }
+        }
+        assert_eq!(solid_value(&SolidPattern::Checker, Vec3::new(-0.5, 0.5, 0.5)), 1.0);
+        // Past Float's range (found by scaling a scene's frequency to 3·10³⁸): ½, not NaN.
+        let huge = SolidPattern::Marble { octaves: 2, frequency: Float::MAX, amplitude: 2.0 };
+        assert_eq!(solid_value(&huge, Vec3::new(3.0, 0.5, 0.5)), 0.5);
+        assert_eq!(solid_value(&SolidPattern::Noise { octaves: 3 }, Vec3::splat(Float::INFINITY)), 0.5);
+        assert_eq!(solid_value(&SolidPattern::Noise { octaves: 4 }, Vec3::new(3.0, -2.0, 7.0)), 0.5);
     }
 
     #[test]
@@ -250,9 +378,9 @@ mod tests {
 
     #[test]
     fn the_lecture_scenes_load_and_render_textured() {
-        // Both scenes of scenes/, at 1/10 of their size: finite, non-negative pixels, and the
-        // textures change the picture (the same scene without them renders differently).
-        for name in ["checkerboard.toml", "solid-checker.toml"] {
+        // The textured scenes of scenes/, at 1/10 of their size: finite, non-negative pixels,
+        // and the textures change the picture (the same scene without them renders differently).
+        for name in ["checkerboard.toml", "solid-checker.toml", "marble-and-wood.toml"] {
             let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes").join(name);
             let mut s = raylab::scene::load(&path).unwrap_or_else(|e| panic!("{e}"));
             (s.width, s.height) = (s.width / 10, s.height / 10);

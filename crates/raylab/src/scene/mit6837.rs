@@ -22,7 +22,8 @@ use std::sync::Arc;
 
 use super::checks::{self, show};
 use super::{
-    Camera, Light, LightKind, Material, Mesh, Object, RenderSettings, Scene, SceneError, Shape, Transform,
+    Camera, Light, LightKind, MAX_OCTAVES, Material, Mesh, Object, RenderSettings, Scene, SceneError, Shape,
+    SolidPattern, Texture, Transform,
 };
 use crate::color::{BLACK, Color, WHITE};
 use crate::math::{Float, Mat4, Vec3, radians};
@@ -95,7 +96,6 @@ const MAX_DEPTH: usize = 64;
 /// The parts of later assignments that the format has and raylab does not model.
 fn unsupported(name: &str) -> Option<&'static str> {
     Some(match name {
-        "Noise" | "Marble" | "Wood" => "procedural texture of 6.837 assignment 6",
         "BezierCurve" | "BSplineCurve" => "spline curve of 6.837 assignment 8",
         "SurfaceOfRevolution" | "BezierPatch" => "spline surface of 6.837 assignment 8",
         _ => return None,
@@ -437,8 +437,8 @@ impl<'a> Parser<'a> {
                     let material = self.material(&block)?;
                     self.materials.push(material);
                 }
-                "Checkerboard" => {
-                    let material = self.checkerboard(&block)?;
+                "Checkerboard" | "Noise" | "Marble" | "Wood" => {
+                    let material = self.solid_texture(&block)?;
                     self.materials.push(material);
                 }
                 other => {
@@ -446,7 +446,10 @@ impl<'a> Parser<'a> {
                         Some(what) => self.error(&block, format!("`{other}` ({what}) is not supported yet")),
                         None => self.error(
                             &block,
-                            format!("unknown material `{other}`, expected Material or PhongMaterial"),
+                            format!(
+                                "unknown material `{other}`, expected Material, PhongMaterial, Checkerboard, \
+                                 Noise, Marble or Wood"
+                            ),
                         ),
                     });
                 }
@@ -649,14 +652,19 @@ impl<'a> Parser<'a> {
         }))
     }
 
-    /// `Checkerboard { Transform { <step>… } materialIndex a  materialIndex b }`
-    /// (6.837 assignment 6): a solid checkerboard of unit cubes in pattern
-    /// space, p′ = M·p for the world point p and M the steps' product, the
-    /// even cubes of material a and the odd of material b. raylab switches the
-    /// diffuse colour only, so a and b (materials defined before it, without
-    /// textures) must differ in `diffuseColor` alone: the material is a's
-    /// with a [`super::Texture::SolidChecker`] whose other colour is b's.
-    fn checkerboard(&mut self, block: &Token<'a>) -> Result<Material, SceneError> {
+    /// The solid textures of 6.837 assignment 6, each `{ Transform { <step>… }
+    /// materialIndex a  materialIndex b … }` with, after the two indices,
+    /// - `Checkerboard`: nothing;
+    /// - `Noise`: `octaves n`;
+    /// - `Marble` and `Wood`: `octaves n  frequency f  amplitude A`.
+    ///
+    /// A material whose pattern (in pattern space p′ = M·p, p the world point,
+    /// M the steps' product) blends materials a and b, defined before it and
+    /// textured or not: a [`super::Texture::Solid`]. The blend mixes colours
+    /// only, so a and b (all they blend) must agree on the exponent and the
+    /// index of refraction.
+    fn solid_texture(&mut self, block: &Token<'a>) -> Result<Material, SceneError> {
+        let kind = block.text;
         self.expect("{")?;
         self.expect("Transform")?;
         self.expect("{")?;
@@ -672,7 +680,7 @@ impl<'a> Parser<'a> {
                     return Err(self.error(
                         &step,
                         format!(
-                            "expected a transformation or `}}` in the Checkerboard's Transform, found `{}`",
+                            "expected a transformation or `}}` in the {kind}'s Transform, found `{}`",
                             step.text
                         ),
                     ));
@@ -683,7 +691,7 @@ impl<'a> Parser<'a> {
         for index in &mut pair {
             self.expect("materialIndex")?;
             let (i, at) = self.count("materialIndex")?;
-            let Some(material) = self.materials.get(i) else {
+            if i >= self.materials.len() {
                 return Err(self.error(
                     &at,
                     format!(
@@ -691,30 +699,65 @@ impl<'a> Parser<'a> {
                         self.materials.len()
                     ),
                 ));
-            };
-            if material.texture.is_some() {
-                return Err(self.error(&at, format!("material {i} is a Checkerboard itself: not supported")));
             }
             *index = i;
         }
+        let pattern = match kind {
+            "Checkerboard" => SolidPattern::Checker,
+            "Noise" => SolidPattern::Noise { octaves: self.octaves()? },
+            _ => {
+                let octaves = self.octaves()?;
+                self.expect("frequency")?;
+                let (frequency, _) = self.number("frequency")?;
+                self.expect("amplitude")?;
+                let (amplitude, _) = self.number("amplitude")?;
+                if kind == "Marble" {
+                    SolidPattern::Marble { octaves, frequency, amplitude }
+                } else {
+                    SolidPattern::Wood { octaves, frequency, amplitude }
+                }
+            }
+        };
         self.expect("}")?;
-        let (even, odd) = (&self.materials[pair[0]], &self.materials[pair[1]]);
-        // b with a's diffuse colour and name must be a.
-        let odd_as_even = Material { diffuse: even.diffuse, name: even.name.clone(), ..odd.clone() };
-        if odd_as_even != *even {
+        let (a, b) = (&self.materials[pair[0]], &self.materials[pair[1]]);
+        let blended: Vec<&Material> = a.blended().into_iter().chain(b.blended()).collect();
+        let first = blended[0];
+        if blended
+            .iter()
+            .any(|m| m.exponent != first.exponent || m.ior != first.ior || m.model != first.model)
+        {
             return Err(self.error(
                 block,
                 format!(
-                    "a Checkerboard of materials {} and {} that differ in more than diffuseColor is not supported yet",
+                    "a {kind} of materials {} and {} that differ in exponent or indexOfRefraction is not \
+                     supported yet (it blends their colours only)",
                     pair[0], pair[1]
                 ),
             ));
         }
         Ok(Material {
             name: format!("material {}", self.materials.len()),
-            texture: Some(super::Texture::SolidChecker { pattern_from_world, other: odd.diffuse }),
-            ..even.clone()
+            texture: Some(Texture::Solid {
+                pattern_from_world,
+                pattern,
+                a: Box::new(a.clone()),
+                b: Box::new(b.clone()),
+            }),
+            ..a.clone()
         })
+    }
+
+    /// `octaves n`, 0 ≤ n ≤ [`MAX_OCTAVES`].
+    fn octaves(&mut self) -> Result<u32, SceneError> {
+        self.expect("octaves")?;
+        let (n, at) = self.count("octaves")?;
+        match u32::try_from(n) {
+            Ok(n) if n <= MAX_OCTAVES => Ok(n),
+            _ => Err(self.error(
+                &at,
+                format!("octaves must be at most {MAX_OCTAVES} (octave {MAX_OCTAVES} is already finer than a Float resolves), found {n}"),
+            )),
+        }
     }
 
     /// `Sphere { center x y z  radius r }`, r > 0.

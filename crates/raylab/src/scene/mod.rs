@@ -169,28 +169,70 @@ pub struct Material {
     pub transparent: Color,
     /// The index of refraction η of the material (the outside is vacuum, η = 1).
     pub ior: Float,
-    /// A texture that varies k_d over the surface (`None`: k_d everywhere).
+    /// A texture that varies the material over the surface (`None`: the same everywhere).
     pub texture: Option<Texture>,
 }
 
-/// A texture: what varies a material's diffuse colour k_d (and ambient kₐ)
-/// over its surface. The description is data; lecture 10 evaluates it, and
-/// lecture 08's tracer asks for the colour at each hit.
+impl Material {
+    /// The untextured materials a surface of this one shows somewhere, and
+    /// blends between: itself without a texture, or for a [`Texture::Solid`]
+    /// those of its two materials. Every property at any hit lies between
+    /// these (each colour channel within their least and greatest).
+    pub fn blended(&self) -> Vec<&Material> {
+        match &self.texture {
+            Some(Texture::Solid { a, b, .. }) => {
+                let mut all = a.blended();
+                all.extend(b.blended());
+                all
+            }
+            _ => vec![self],
+        }
+    }
+}
+
+/// A texture: what varies a material over its surface. The description is
+/// data; lecture 10 evaluates it, and lecture 08's tracer asks for the
+/// material at each hit.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Texture {
     /// A checkerboard in the surface's texture coordinates (u, v): `scale`
     /// cells per unit of u and of v, the cell (0, 0) and every other one of
     /// the material's `diffuse` colour, the rest `other`.
     Checker { scale: Float, other: Color },
-    /// A solid checkerboard of unit cubes in pattern space, p′ =
-    /// `pattern_from_world`·p (p the hit point in world space): the cube
-    /// (0, 0, 0) and every other one of the material's `diffuse`, the rest
-    /// `other`. 6.837's `Checkerboard` material.
-    SolidChecker { pattern_from_world: Mat4, other: Color },
+    /// A solid texture: a pattern in 3D, p′ = `pattern_from_world`·p (p the
+    /// hit point in world space), whose value s ∈ [0, 1] blends two
+    /// materials: the surface is `a` where s = 0, `b` where s = 1, and in
+    /// between every colour (k_d, k_s, k_r, k_t) is (1 − s)·a's + s·b's; the
+    /// two agree on the exponent, the specular model and η (the loaders
+    /// refuse others). Either may be textured itself (6.837's logo: a
+    /// checkerboard of two woods). The material that holds the texture
+    /// carries `a`'s properties. 6.837's `Checkerboard`, `Noise`, `Marble`
+    /// and `Wood`; the TOML format's `solid_checker`.
+    Solid { pattern_from_world: Mat4, pattern: SolidPattern, a: Box<Material>, b: Box<Material> },
     /// An image of linear colours, read when the scene is loaded, looked up
     /// at the hit's (u, v) with bilinear filtering and wrapping; `file` is
     /// where it was read from.
     Image { file: PathBuf, image: Arc<Image> },
+}
+
+/// The most octaves a noise pattern may sum (both formats): octave k scales
+/// p′ by 2ᵏ, and past 2²⁴ an f32 coordinate of 1 has no fraction left for the
+/// noise to vary over.
+pub const MAX_OCTAVES: u32 = 24;
+
+/// The pattern of a [`Texture::Solid`], in pattern space p′ (lecture 10
+/// computes s; book §10.3 Solid textures).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum SolidPattern {
+    /// Unit cubes: s = 0 in the cube (0, 0, 0) and every other one, 1 in the rest.
+    Checker,
+    /// Fractal noise N(p′), the sum of `octaves` octaves of gradient noise,
+    /// mapped to s = clamp((N + 1)/2, 0, 1).
+    Noise { octaves: u32 },
+    /// Veins: s = (1 + sin(frequency·x′ + amplitude·N(p′)))/2.
+    Marble { octaves: u32, frequency: Float, amplitude: Float },
+    /// Rings around the y′ axis: s = (1 + sin(frequency·√(x′² + z′²) + amplitude·N(p′)))/2.
+    Wood { octaves: u32, frequency: Float, amplitude: Float },
 }
 
 impl Default for Material {

@@ -68,22 +68,29 @@ fn bound(scene: &Scene, replaced: Option<(Value, f64)>) -> f64 {
         _ => own,
     };
     let materials = scene.materials.iter().enumerate();
+    // A solid texture blends materials: the largest of theirs bounds the blend.
+    let most = |mat: &super::Material, f: &dyn Fn(&super::Material) -> f64| {
+        mat.blended().into_iter().map(f).fold(0.0, f64::max)
+    };
     let diffuse = materials
         .clone()
         .map(|(i, mat)| {
             let other = match &mat.texture {
-                Some(Texture::Checker { other, .. } | Texture::SolidChecker { other, .. }) => m(*other),
+                Some(Texture::Checker { other, .. }) => m(*other),
                 Some(Texture::Image { .. }) => 1.0,
-                None => 0.0,
+                Some(Texture::Solid { .. }) | None => 0.0,
             };
-            get(Value::Diffuse(i), m(mat.diffuse)).max(other)
+            get(Value::Diffuse(i), most(mat, &|l| m(l.diffuse))).max(other)
         })
         .fold(0.0, f64::max);
-    let specular =
-        materials.clone().map(|(i, mat)| get(Value::Specular(i), m(mat.specular))).fold(0.0, f64::max);
+    let specular = materials
+        .clone()
+        .map(|(i, mat)| get(Value::Specular(i), most(mat, &|l| m(l.specular))))
+        .fold(0.0, f64::max);
     let branching = materials
         .map(|(i, mat)| {
-            get(Value::Reflective(i), m(mat.reflective)) + get(Value::Transparent(i), m(mat.transparent))
+            get(Value::Reflective(i), most(mat, &|l| m(l.reflective)))
+                + get(Value::Transparent(i), most(mat, &|l| m(l.transparent)))
         })
         .fold(0.0, f64::max);
     let area_samples = f64::from(area_samples(scene));

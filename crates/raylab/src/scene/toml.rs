@@ -20,8 +20,8 @@ use super::toml_spec::{
     StepSpec, TextureSpec, shape_keys,
 };
 use super::{
-    Camera, Light, LightKind, Material, Mesh, Object, RenderSettings, Scene, SceneError, Shape, Specular,
-    Texture, Transform,
+    Camera, Light, LightKind, MAX_OCTAVES, Material, Mesh, Object, RenderSettings, Scene, SceneError, Shape,
+    SolidPattern, Specular, Texture, Transform,
 };
 use crate::color::{BLACK, Color, WHITE};
 use crate::image::Image;
@@ -385,7 +385,7 @@ impl Reader<'_> {
                 Some(i) => checks::index_of_refraction(self.float(i, "ior")?, "ior")
                     .map_err(|e| self.error(&i.span(), e))?,
             };
-            materials.push(Material {
+            let mut material = Material {
                 diffuse: self.color(&m.diffuse, "diffuse", WHITE)?,
                 specular: self.color(&m.specular, "specular", BLACK)?,
                 exponent,
@@ -393,30 +393,42 @@ impl Reader<'_> {
                 reflective: self.color(&m.reflective, "reflective", BLACK)?,
                 transparent: self.color(&m.transparent, "transparent", BLACK)?,
                 ior,
-                texture: m.texture.as_ref().map(|t| self.texture(t)).transpose()?,
+                texture: None,
                 name,
-            });
+            };
+            material.texture = m.texture.as_ref().map(|t| self.texture(t, &material)).transpose()?;
+            materials.push(material);
         }
         Ok(materials)
     }
 
-    /// A material's `texture`: a uv checkerboard, a solid one, or an image
-    /// file (relative to the scene file's folder, read now).
-    fn texture(&self, spec: &Spanned<TextureSpec>) -> Result<Texture, SceneError> {
+    /// The `texture` of `material` (read without it): a uv checkerboard, a
+    /// solid one, or an image file (relative to the scene file's folder, read now).
+    fn texture(&self, spec: &Spanned<TextureSpec>, material: &Material) -> Result<Texture, SceneError> {
         let (whole, t) = (spec.span(), spec.get_ref());
         let kind = t.kind.get_ref().as_str();
         let allowed: &[&str] = match kind {
             "checker" | "solid_checker" => &["scale", "other"],
+            "noise" => &["scale", "other", "octaves"],
+            "marble" | "wood" => &["scale", "other", "octaves", "frequency", "amplitude"],
             "image" => &["file"],
             _ => {
                 return Err(self.error(
                     &t.kind.span(),
-                    format!("unknown texture type `{kind}`, expected checker, solid_checker or image"),
+                    format!(
+                        "unknown texture type `{kind}`, expected checker, solid_checker, noise, marble, wood or image"
+                    ),
                 ));
             }
         };
-        let present =
-            [("scale", span_of(&t.scale)), ("other", span_of(&t.other)), ("file", span_of(&t.file))];
+        let present = [
+            ("scale", span_of(&t.scale)),
+            ("other", span_of(&t.other)),
+            ("file", span_of(&t.file)),
+            ("octaves", span_of(&t.octaves)),
+            ("frequency", span_of(&t.frequency)),
+            ("amplitude", span_of(&t.amplitude)),
+        ];
         let what = format!("the {kind} texture");
         self.only(&what, &present, allowed)?;
         if kind == "image" {
@@ -436,10 +448,38 @@ impl Reader<'_> {
             },
         };
         let other = self.color(&t.other, "other", BLACK)?;
-        Ok(if kind == "checker" {
-            Texture::Checker { scale, other }
-        } else {
-            Texture::SolidChecker { pattern_from_world: Mat4::from_scale(Vec3::splat(scale)), other }
+        if kind == "checker" {
+            return Ok(Texture::Checker { scale, other });
+        }
+        let octaves = match &t.octaves {
+            None => 0,
+            Some(n) => match u32::try_from(*n.get_ref()) {
+                Ok(k) if k <= MAX_OCTAVES => k,
+                _ => {
+                    let found = n.get_ref();
+                    return Err(
+                        self.error(&n.span(), format!("octaves must be in 0..={MAX_OCTAVES}, found {found}"))
+                    );
+                }
+            },
+        };
+        let number = |x: &Option<Num>, key: &str, default: Float| match x {
+            None => Ok(default),
+            Some(n) => self.float(n, key),
+        };
+        let (frequency, amplitude) =
+            (number(&t.frequency, "frequency", 1.0)?, number(&t.amplitude, "amplitude", 1.0)?);
+        let pattern = match kind {
+            "solid_checker" => SolidPattern::Checker,
+            "noise" => SolidPattern::Noise { octaves },
+            "marble" => SolidPattern::Marble { octaves, frequency, amplitude },
+            _ => SolidPattern::Wood { octaves, frequency, amplitude },
+        };
+        Ok(Texture::Solid {
+            pattern_from_world: Mat4::from_scale(Vec3::splat(scale)),
+            pattern,
+            a: Box::new(material.clone()),
+            b: Box::new(Material { diffuse: other, ..material.clone() }),
         })
     }
 

@@ -105,6 +105,9 @@ pub struct TextureSpec {
     pub scale: Option<Num>,
     pub other: Option<Nums>,
     pub file: Option<Spanned<String>>,
+    pub octaves: Option<Spanned<i64>>,
+    pub frequency: Option<Num>,
+    pub amplitude: Option<Num>,
 }
 
 /// One `[[objects]]` table; which shape keys it takes depends on its `type`

@@ -541,9 +541,15 @@ fn textures_load_with_their_defaults() {
     let scene = parse(&text).unwrap_or_else(|e| panic!("{e}"));
     let red = Color::new(1.0, 0.0, 0.0);
     assert_eq!(scene.materials[0].texture, Some(Texture::Checker { scale: 4.0, other: red }));
-    let solid = |pattern_from_world| Some(Texture::SolidChecker { pattern_from_world, other: BLACK });
-    assert_eq!(scene.materials[1].texture, solid(Mat4::IDENTITY));
-    assert_eq!(scene.materials[2].texture, solid(Mat4::from_scale(Vec3::splat(2.0))));
+    // A solid checker blends the material (untextured) with itself in the other colour.
+    let solid = |i: usize, pattern_from_world| {
+        let a = Material { texture: None, ..scene.materials[i].clone() };
+        let b = Material { diffuse: BLACK, ..a.clone() };
+        let (a, b) = (Box::new(a), Box::new(b));
+        Some(Texture::Solid { pattern_from_world, pattern: SolidPattern::Checker, a, b })
+    };
+    assert_eq!(scene.materials[1].texture, solid(1, Mat4::IDENTITY));
+    assert_eq!(scene.materials[2].texture, solid(2, Mat4::from_scale(Vec3::splat(2.0))));
     assert_eq!(scene.materials[3].texture, None);
 }
 
@@ -569,8 +575,8 @@ fn texture_errors() {
     // Line 7 is the texture's; columns counted in `texture = { type = "…", … }` (the table opens
     // at column 11, the type's value at 20).
     let texture = |t: &str| error(&format!("{CAMERA}[materials.m]\ntexture = {{ {t} }}\n"));
-    insta::assert_snapshot!(texture("type = \"wood\""),
-        @"scenes/a.toml:7:20: unknown texture type `wood`, expected checker, solid_checker or image");
+    insta::assert_snapshot!(texture("type = \"oak\""),
+        @"scenes/a.toml:7:20: unknown texture type `oak`, expected checker, solid_checker, noise, marble, wood or image");
     insta::assert_snapshot!(texture("type = \"image\""),
         @"scenes/a.toml:7:11: the image texture needs `file`");
     insta::assert_snapshot!(texture("type = \"checker\", file = \"a.png\""),
@@ -584,6 +590,36 @@ fn texture_errors() {
         missing.starts_with("scenes/a.toml:7:36: image file `missing.png`: scenes/missing.png"),
         "{missing}"
     );
+}
+
+#[test]
+fn noise_marble_and_wood_textures_load_with_their_defaults() {
+    // octaves 0, frequency and amplitude 1 unless given; scale maps p to scale·p.
+    let text = format!(
+        "{CAMERA}[materials.a]\ndiffuse = [1, 0, 0]\ntexture = {{ type = \"noise\", octaves = 4, other = [0, 0, 1] }}\n\
+         [materials.b]\ntexture = {{ type = \"marble\", scale = 2, octaves = 3, frequency = 5, amplitude = 2.5 }}\n\
+         [materials.c]\ntexture = {{ type = \"wood\" }}\n"
+    );
+    let scene = parse(&text).unwrap_or_else(|e| panic!("{e}"));
+    let pattern = |i: usize| match &scene.materials[i].texture {
+        Some(Texture::Solid { pattern_from_world, pattern, a, b }) => {
+            (*pattern_from_world, *pattern, a.diffuse, b.diffuse)
+        }
+        other => panic!("{other:?}"),
+    };
+    let (red, blue) = (Color::new(1.0, 0.0, 0.0), Color::new(0.0, 0.0, 1.0));
+    assert_eq!(pattern(0), (Mat4::IDENTITY, SolidPattern::Noise { octaves: 4 }, red, blue));
+    let marble = SolidPattern::Marble { octaves: 3, frequency: 5.0, amplitude: 2.5 };
+    assert_eq!(pattern(1), (Mat4::from_scale(Vec3::splat(2.0)), marble, WHITE, BLACK));
+    let wood = SolidPattern::Wood { octaves: 0, frequency: 1.0, amplitude: 1.0 };
+    assert_eq!(pattern(2), (Mat4::IDENTITY, wood, WHITE, BLACK));
+    let texture = |t: &str| error(&format!("{CAMERA}[materials.a]\ntexture = {{ {t} }}\n"));
+    insta::assert_snapshot!(texture("type = \"noise\", octaves = 25"),
+        @"scenes/a.toml:7:39: octaves must be in 0..=24, found 25");
+    insta::assert_snapshot!(texture("type = \"noise\", frequency = 2"),
+        @"scenes/a.toml:7:41: frequency is not a key of the noise texture (its keys: scale, other, octaves)");
+    insta::assert_snapshot!(texture("type = \"granite\""),
+        @"scenes/a.toml:7:20: unknown texture type `granite`, expected checker, solid_checker, noise, marble, wood or image");
 }
 
 /// The messages a student writing scenes met (found by corrupting scene files): each now names

@@ -20,7 +20,7 @@ mod h01 {
     use crate::check::Meta;
 
     declare_checks! {
-        "l01";
+        "l01", judged;
         Meta::unit("rotate_z", "a quarter turn about z takes x to y, counter-clockwise seen from +z")
         .named_hidden("hidden-quarter-turn") => hidden(),
     }
@@ -29,7 +29,7 @@ mod h01 {
     mod code {
         pub(super) fn hidden() -> crate::check::CheckResult {
             use crate::check::close3;
-            use l01_transforms::{rotate_z, transform_vector};
+            use crate::remote::{rotate_z, transform_vector};
             use raylab::{Float, Vec3};
             // R_z(90°) = [[0, −1, 0], [1, 0, 0], [0, 0, 1]]: x ↦ y and y ↦ −x; cos 90° rounds to ~6e-8 in f32.
             let r = rotate_z(std::f64::consts::FRAC_PI_2 as Float);
@@ -37,8 +37,8 @@ mod h01 {
             let tolerance = 4.0 * Float::EPSILON;
             let cause =
                 "R_z(θ) = [[cos θ, −sin θ, 0], [sin θ, cos θ, 0], [0, 0, 1]]: counter-clockwise seen from +z";
-            close3(case, transform_vector(&r, Vec3::X), Vec3::Y, tolerance, cause)?;
-            close3(case, transform_vector(&r, Vec3::Y), -Vec3::X, tolerance, cause).map(|()| "2 cases".into())
+            close3(case, transform_vector(r, Vec3::X), Vec3::Y, tolerance, cause)?;
+            close3(case, transform_vector(r, Vec3::Y), -Vec3::X, tolerance, cause).map(|()| "2 cases".into())
         }
     }
 }
@@ -47,7 +47,7 @@ mod h02 {
     use crate::check::Meta;
 
     declare_checks! {
-            "l02";
+            "l02", judged;
             Meta::unit(
         "hit_sphere_stable",
         "an off-axis ray at an off-centre sphere of radius 0.5, both roots ahead",
@@ -59,14 +59,14 @@ mod h02 {
     mod code {
         pub(super) fn hidden() -> crate::check::CheckResult {
             use crate::check::{close, fail};
-            use l02_ray_casting::hit_sphere_stable;
+            use crate::remote::hit_sphere_stable;
             use raylab::{Float, Interval, Ray, Vec3};
             // Sphere r = 0.5 at (1, 2, −3); the ray from (1, 2.3, 2) along −z passes 0.3 from the
             // centre: half chord √(0.25 − 0.09) = 0.4, so t = 5 − 0.4 = 4.6 (and 5.4).
             let case = "sphere r = 0.5 at (1, 2, −3), ray from (1, 2.3, 2) along (0, 0, −1)";
             let ray = Ray::new(Vec3::new(1.0, 2.3, 2.0), Vec3::new(0.0, 0.0, -1.0));
             let got =
-                hit_sphere_stable(&ray, Vec3::new(1.0, 2.0, -3.0), 0.5, Interval::new(0.0, Float::INFINITY));
+                hit_sphere_stable(ray, Vec3::new(1.0, 2.0, -3.0), 0.5, Interval::new(0.0, Float::INFINITY));
             let Some(hit) = got else {
                 return Err(fail(
                     case,
@@ -86,7 +86,7 @@ mod h03 {
     use crate::check::Meta;
 
     declare_checks! {
-        "l03";
+        "l03", judged;
         Meta::unit("hit_slabs", "a ray along +z through an off-origin box: enter and exit t by hand")
         .named_hidden("hidden-off-origin-box") => hidden(),
     }
@@ -95,14 +95,14 @@ mod h03 {
     mod code {
         pub(super) fn hidden() -> crate::check::CheckResult {
             use crate::check::{close, fail};
-            use l03_polygons_triangles::hit_slabs;
+            use crate::remote::hit_slabs;
             use raylab::{Float, Interval, Ray, Vec3};
             // Box [−1, 2] × [0, 3] × [1, 4]; ray from (0.5, 1, −10) along (0, 0, 2): x and y stay inside,
             // z enters at (1 + 10)/2 = 5.5 and leaves at (4 + 10)/2 = 7.
             let case = "box [−1, 2] × [0, 3] × [1, 4], ray from (0.5, 1, −10) along (0, 0, 2)";
             let ray = Ray::new(Vec3::new(0.5, 1.0, -10.0), Vec3::new(0.0, 0.0, 2.0));
             let got = hit_slabs(
-                &ray,
+                ray,
                 Vec3::new(-1.0, 0.0, 1.0),
                 Vec3::new(2.0, 3.0, 4.0),
                 Interval::new(0.0, Float::INFINITY),
@@ -128,7 +128,7 @@ mod h05 {
     use crate::check::Meta;
 
     declare_checks! {
-        "l05";
+        "l05", judged;
         Meta::unit("lambert", "a 3-4-5 direction to the light, and the same light behind the surface")
         .named_hidden("hidden-3-4-5") => hidden(),
     }
@@ -137,7 +137,7 @@ mod h05 {
     mod code {
         pub(super) fn hidden() -> crate::check::CheckResult {
             use crate::check::close;
-            use l05_shading::lambert;
+            use crate::remote::lambert;
             use raylab::{Float, Vec3};
             // n = z, l = (0, 0.6, 0.8): cos θ = 0.8; the light mirrored behind the surface gives 0, not −0.8.
             let n = Vec3::Z;
@@ -155,7 +155,7 @@ mod h07 {
     use crate::check::Meta;
 
     declare_checks! {
-        "l07";
+        "l07", judged;
         Meta::unit("refract", "refraction into glass at 30° and back out, against Snell's law by hand")
         .named_hidden("hidden-snell-both-ways") => hidden(),
     }
@@ -164,7 +164,7 @@ mod h07 {
     mod code {
         pub(super) fn hidden() -> crate::check::CheckResult {
             use crate::check::{close3, fail};
-            use l07_reflection_refraction::refract;
+            use crate::remote::refract;
             use raylab::{Float, Vec3};
             // i at 30° to the normal n = +y, going down: i = (sin 30°, −cos 30°, 0). Into glass
             // (η = 1/1.5): sin θt = sin 30° / 1.5 = 1/3, cos θt = √(8/9), t = (1/3, −√(8/9), 0).
@@ -201,7 +201,7 @@ mod h09 {
     use crate::check::Meta;
 
     declare_checks! {
-        "l09";
+        "l09", judged;
         Meta::unit("Aabb::surface_area", "a 1 × 2 × 3 box away from the origin: 22 by hand")
     .named_hidden("hidden-1-2-3-box") => hidden(),
     }
@@ -210,12 +210,12 @@ mod h09 {
     mod code {
         pub(super) fn hidden() -> crate::check::CheckResult {
             use crate::check::close;
-            use l09_acceleration::Aabb;
+            use crate::remote::aabb_surface_area;
             use raylab::{Float, Vec3};
             // 2(1·2 + 2·3 + 3·1) = 22, wherever the box is.
-            let b = Aabb::new(Vec3::new(4.0, -1.0, 10.0), Vec3::new(5.0, 1.0, 13.0));
+            let (min, max) = (Vec3::new(4.0, -1.0, 10.0), Vec3::new(5.0, 1.0, 13.0));
             let case = "the box [4, 5] × [−1, 1] × [10, 13]";
-            let got = b.surface_area();
+            let got = aabb_surface_area(min, max);
             close(case, got, 22.0, 8.0 * Float::EPSILON * 22.0, "2(dx·dy + dy·dz + dz·dx)")
                 .map(|()| "1 case".into())
         }

@@ -150,4 +150,15 @@ mod tests {
             }
         }
     }
+
+    /// Graded as a submission, every check runs apart from the student's code (`judge.rs`):
+    /// one that was not would let a submission write its own verdict.
+    #[test]
+    fn every_check_is_judged_hidden_ones_included() {
+        let mut infos = infos();
+        infos.extend(crate::images::infos());
+        let unjudged: Vec<&str> = infos.iter().filter(|i| !i.judged).map(|i| i.id.as_str()).collect();
+        assert!(unjudged.is_empty(), "not judged: {unjudged:?}");
+        assert!(infos.iter().any(|i| i.hidden) || !cfg!(feature = "hidden"), "no hidden check listed");
+    }
 }

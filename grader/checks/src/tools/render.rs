@@ -64,6 +64,10 @@ pub struct RenderArgs {
     /// Print the ray tree of pixel X,Y (0,0 is the top left).
     #[arg(long, value_parser = parse_pixel)]
     tree: Option<(u32, u32)>,
+    /// With --tree: also write that pixel's ray tree in 3D over the scene, an HTML page that
+    /// works offline (drag to orbit, shift-drag to pan, the wheel to zoom).
+    #[arg(long, requires = "tree")]
+    view: Option<PathBuf>,
     /// Render even when the scene asks for more work or memory than the budget
     /// (`RAY_BUDGET` rays, `IMAGE_BUDGET` bytes of image).
     #[arg(long)]
@@ -260,6 +264,13 @@ pub(crate) fn render_to_file(args: &RenderArgs) -> Result<(), String> {
             "pixel ({}, {}): colour ({:.3}, {:.3}, {:.3})\n{tree}",
             pixel.0, pixel.1, color.x, color.y, color.z
         );
+        if let Some(file) = &args.view {
+            let title =
+                format!("the ray tree of pixel ({}, {}) of {}", pixel.0, pixel.1, args.scene.display());
+            let mut view = crate::view3d::View::new(&scene, &title);
+            view.add_tree(&scene, "yours", pixel, &tree);
+            std::fs::write(file, view.to_html()?).map_err(|e| format!("{}: {e}", file.display()))?;
+        }
     }
     let (image, stats) = shade::render_scene(&scene, args.aov, &settings, args.sampling(&scene))?;
     let write = match args.aov {

@@ -91,7 +91,8 @@ pub(super) fn distance(a: &Mat4, b: &Mat4) -> Float {
     (*a - *b)
         .to_cols_array()
         .iter()
-        .fold(0.0, |m: Float, e| if e.is_nan() { Float::NAN } else { m.max(e.abs()) })
+        // A NaN anywhere stays (f32::max would drop it at the next number).
+        .fold(0.0, |m: Float, e| if m.is_nan() || e.is_nan() { Float::NAN } else { m.max(e.abs()) })
 }
 
 pub(super) fn near(a: &Mat4, b: &Mat4, tol: Float) -> bool {

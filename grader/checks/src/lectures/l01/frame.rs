@@ -41,7 +41,7 @@ pub(super) fn is_basis_cases(is_basis: BasisFn) -> CheckResult {
         1e-6·|i|·|j|·|k|, not with a fixed number";
     let v = Vec3::new;
     let nan = Float::NAN;
-    let cases: [(Vec3, Vec3, Vec3, bool, &str); 13] = [
+    let cases: [(Vec3, Vec3, Vec3, bool, &str); 15] = [
         (Vec3::X, Vec3::Y, Vec3::Z, true, "the coordinate axes are a basis"),
         (Vec3::Y, Vec3::X, Vec3::Z, true, "a left-handed triple (det = −1) is a basis too: compare |det|"),
         (Vec3::X, v(1.0, 1.0, 0.0), Vec3::ONE, true, "a skewed triple with det = 1 (triangular) is a basis"),
@@ -64,6 +64,24 @@ pub(super) fn is_basis_cases(is_basis: BasisFn) -> CheckResult {
             false,
             "nearly coplanar (|det| = 1e-7 < 1e-6·|i||j||k|): test |det| against the relative \
                 threshold, not det ≠ 0",
+        ),
+        // det = 1e-6 exactly, 1e-6·|i||j||k| = 1e-6·√(1 + 10⁻¹²): 1e-6 in f32, a little more in f64.
+        // The test is strict: no basis.
+        (
+            Vec3::X,
+            Vec3::Y,
+            v(1.0, 0.0, 1e-6),
+            false,
+            "|det| at the threshold is not above it: the test is |det| > 1e-6·|i||j||k|, strictly",
+        ),
+        // Lengths √2, √2, √2 (to 10⁻¹²): det = 2·10⁻⁶ against 1e-6·2√2 = 2.83·10⁻⁶, no basis; a
+        // threshold that divides by a length would be 1.41·10⁻⁶.
+        (
+            v(1.0, 1.0, 0.0),
+            v(-1.0, 1.0, 0.0),
+            v(1.0, 1.0, 1e-6),
+            false,
+            "the threshold is relative: 1e-6 times the product of the three lengths, here 2√2·10⁻⁶",
         ),
         // det = 1e-5 > 1e-6.
         (Vec3::X, Vec3::Y, v(1.0, 0.0, 1e-5), true, "|det| = 1e-5 > 1e-6·|i||j||k|: a basis"),
@@ -96,7 +114,7 @@ pub(super) fn is_basis_cases(is_basis: BasisFn) -> CheckResult {
             cause,
         )?;
     }
-    Ok("13 triples".into())
+    Ok("15 triples".into())
 }
 
 /// Lengths whose product of three overflows (`big`) or underflows to zero

@@ -134,7 +134,8 @@ pub(super) fn error_or_basis(
         (w - w_exact).abs().max_element(),
     ]
     .into_iter()
-    .fold(0.0, |m: Float, x| if x.is_nan() { Float::NAN } else { m.max(x) });
+    // A NaN anywhere stays (f32::max would drop it at the next number).
+    .fold(0.0, |m: Float, x| if m.is_nan() || x.is_nan() { Float::NAN } else { m.max(x) });
     let ok = m.is_finite() && worst <= BASIS_TOL && e == eye.extend(1.0);
     ensure(
         ok,
@@ -241,9 +242,41 @@ pub(super) fn look_at_degenerate(look_at: LookAtFn) -> CheckResult {
             checked += 1;
         }
     }
+    // 5. The threshold is relative to |up|: eye − at along (1, 1, 0) and up = (1, 1, 10⁻⁶), so
+    //    |up × w| = 10⁻⁶ (to a few ε) against 1e-6·|up| = 1.41·10⁻⁶: an error, by a margin of
+    //    40 %. (1e-6/|up| = 0.71·10⁻⁶ would make it a camera.)
+    let (eye, at, up) = (v(1.0, 1.0, 0.0), Vec3::ZERO, v(1.0, 1.0, 1e-6));
+    let got = look_at(eye, at, up);
+    ensure(
+        got == Err(CameraError::UpParallelToView),
+        format!("look_at(eye {}, at the origin, up {}): |up × w| = 1e-6, |up| = √2", vec3(eye), vec3(up)),
+        "Err(UpParallelToView)",
+        show_look_at(&got),
+        "the threshold is relative: an error when |up × w| ≤ 1e-6·|up|, and here |up| = √2",
+    )?;
+    // 6. A huge up is still up: (0, MAX/4, 0) from +z, the identity's axes (up × w overflows
+    //    unless up is rescaled first).
+    look_at_case(look_at, v(0.0, 0.0, 5.0), Vec3::ZERO, v(0.0, Float::MAX / 4.0, 0.0))?;
+    // 7. A NaN or infinite input, the up vector's included: an error, never a NaN matrix.
+    let (nan, inf) = (Float::NAN, Float::INFINITY);
+    for (eye, at, up) in [
+        (v(nan, 0.0, 5.0), Vec3::ZERO, Vec3::Y),
+        (v(0.0, 0.0, 5.0), v(0.0, inf, 0.0), Vec3::Y),
+        (v(0.0, 0.0, 5.0), Vec3::ZERO, v(nan, 1.0, 0.0)),
+        (v(0.0, 0.0, 5.0), Vec3::ZERO, v(inf, 1.0, 0.0)),
+    ] {
+        let got = look_at(eye, at, up);
+        ensure(
+            got == Err(CameraError::NotFinite),
+            format!("look_at(eye {}, at {}, up {})", vec3(eye), vec3(at), vec3(up)),
+            "Err(NotFinite)",
+            show_look_at(&got),
+            "a NaN or infinite eye, at or up is CameraError::NotFinite: test all three with is_finite first",
+        )?;
+    }
     Ok(format!(
         "5 parallel ups are errors, {checked} near-degenerate cameras are orthonormal within \
-            {BASIS_TOL:.0e}"
+            {BASIS_TOL:.0e}; the threshold relative to |up|, a huge up, 4 non-finite inputs"
     ))
 }
 

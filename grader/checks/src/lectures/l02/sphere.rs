@@ -31,6 +31,40 @@ pub(super) fn sphere_cases(hit: SphereFn) -> CheckResult {
         "from inside the normal faces the ray: build the hit with Hit::new(ray, t, p − c)",
     )?;
     ensure(!h.front_face, case, "front_face false", "true", "a ray from inside meets the back face")?;
+    // From the centre along (2, 0, 0): a = 4, roots ±½, the far root t = ½ in units of dir.
+    let case = "ray from the centre along (2, 0, 0): from inside, dir is not unit";
+    let got = hit(&ray([0.0, 0.0, 0.0], [2.0, 0.0, 0.0]), origin, 1.0, all);
+    let Some(h) = got else { return Err(fail(case, "t = 0.5", show_hit(&got), SPHERE_CAUSE)) };
+    close(
+        case,
+        h.t,
+        0.5,
+        TOL,
+        "the far root is in units of dir too: divide it by 2a (or |d|, or a) as the near one",
+    )?;
+    // From inside, off the centre, along (0, 0, −2): a = 4, the roots −0.25 and 0.75; the far one
+    // leaves at z = −1.
+    let case = "ray from (0, 0, 0.5) along (0, 0, −2): from inside, dir is not unit";
+    let got = hit(&ray([0.0, 0.0, 0.5], [0.0, 0.0, -2.0]), origin, 1.0, all);
+    let Some(h) = got else { return Err(fail(case, "t = 0.75", show_hit(&got), SPHERE_CAUSE)) };
+    close(case, h.t, 0.75, TOL, "each root is in units of dir: t = q/a and c/q, with a = d·d = 4")?;
+    // Just inside the surface, at z₀ = −0.9999, leaving along +z: the far root t = 1 − z₀ (in f64
+    // from the rounded z₀). Every method the lecture teaches gets it to a few ε; a root taken as
+    // c/q with q = −(b′ − sign(b′)·√Δ) cancels to the rounding error of c, 3·10⁻⁴ of it.
+    let z0: Float = -0.9999;
+    let case = "ray from (0, 0, −0.9999) along +z: just inside the surface, leaving";
+    let got = hit(&ray([0.0, 0.0, z0], [0.0, 0.0, 1.0]), origin, 1.0, all);
+    let expected = (1.0 - z0 as f64) as Float;
+    let Some(h) = got else {
+        return Err(fail(case, format!("t = {}", num(expected)), show_hit(&got), SPHERE_CAUSE));
+    };
+    close(
+        case,
+        h.t,
+        expected,
+        TOL,
+        "the far root loses nothing to cancellation: q = −(b′ + sign(b′)·√Δ) adds two numbers of one sign",
+    )?;
     // The near root outside the range: the far root t = 6 remains.
     let case = "ray from (0, 0, 5) along −z, range (4.5, ∞)";
     let got = hit(&ray([0.0, 0.0, 5.0], [0.0, 0.0, -1.0]), origin, 1.0, Interval::new(4.5, Float::INFINITY));
@@ -62,7 +96,7 @@ pub(super) fn sphere_cases(hit: SphereFn) -> CheckResult {
     let Some(h) = got else { return Err(fail(case, "t = 11", show_hit(&got), SPHERE_CAUSE)) };
     close(case, h.t, 11.0, 16.0 * TOL, "f = o − c, with c the sphere's centre")?;
     close3(case, h.normal, Vec3::Z, TOL, "the normal is (p − c)/r: divide by the radius")?;
-    Ok("7 cases".into())
+    Ok("10 cases".into())
 }
 
 /// A unit sphere at distance D = 10⁴ along a generic direction, rays

@@ -6,6 +6,7 @@
 
 pub(super) use l03_polygons_triangles::TriangleHit;
 pub(super) use raylab::math::consts::PI;
+pub(super) use raylab::math::gamma;
 pub(super) use raylab::random::Rng;
 pub(super) use raylab::scene::Mesh;
 pub(super) use raylab::{Float, Hit, Interval, Ray, Vec2, Vec3};
@@ -14,7 +15,7 @@ pub(super) use crate::check::{
     CheckResult, Failure, close, close3, ensure, fail, maybe, near3, num, ray, show_hit, show_ray, show_span,
     vec3,
 };
-pub(super) use raylab_testing::exact::exact_hits;
+pub(super) use raylab_testing::exact::{Ratio, exact_span};
 
 // The student's functions, each value taken through `judge::student` (the lecture is `judged`).
 crate::judge::student_fns! { l03_polygons_triangles:

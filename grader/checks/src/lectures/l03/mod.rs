@@ -13,7 +13,8 @@ declare_checks! {
         "hit_slabs",
         "axis-parallel-rays",
         "axis-parallel rays, origins on a slab plane (±0 directions), flat boxes, edges and corners, and \
-            4,000 rays against exact integer arithmetic: no false misses and never NaN",
+            4,000 rays against exact integer arithmetic: no false misses, never NaN, entry and exit t \
+            within 4γ₃",
     ) => slabs_extreme(hit_slabs),
     Meta::unit("hit_box", "the face hit and its normal on all six faces, from outside and from inside")
         .needs(&["03/hit_slabs"]) => box_cases(hit_box),
@@ -60,8 +61,11 @@ declare_checks! {
         "the hit record: normal against the ray, front_face, uv = (β, γ), shading normals",
     )
     .needs(&["03/hit_triangle_watertight", "03/interpolate_normal"]) => hit_triangle_cases(hit_triangle),
-    Meta::unit("hit_mesh", "the closest triangle whatever the order, mesh uvs and normals interpolated")
-        .needs(&["03/hit_triangle"]) => mesh_cases(hit_mesh),
+    Meta::unit(
+        "hit_mesh",
+        "the closest triangle whatever the order, mesh uvs (on both triangles) and normals interpolated",
+    )
+    .needs(&["03/hit_triangle"]) => mesh_cases(hit_mesh),
     Meta::extreme(
         "hit_mesh",
         "no-leaks",

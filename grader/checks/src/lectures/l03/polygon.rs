@@ -133,7 +133,23 @@ pub(super) fn crossings_cases(inside: InsideFn) -> CheckResult {
             format!("p = {} on the edge shared by {} and {}", show2(p), show_polygon(&a), show_polygon(&b));
         ensure(in_a != in_b, case, "inside exactly one", format!("{in_a} and {in_b}"), SHARED)?;
     }
-    Ok(format!("{} points and 2 shared edges", table.len()))
+    // Which side a boundary point goes to: the test ray runs toward +x and a crossing counts when
+    // p is strictly left of the upward edge, so a point of the square's left edge is inside (it
+    // crosses the right edge only) and one of its right edge is outside (it crosses nothing).
+    for (p, expected) in [(Vec2::new(0.0, 1.0), true), (Vec2::new(2.0, 1.0), false)] {
+        let got = inside(&square(), p);
+        let case =
+            format!("inside_crossings(polygon {}, p = {}): on an edge", show_polygon(&square()), show2(p));
+        ensure(
+            got == expected,
+            case,
+            expected,
+            got,
+            "cast the test ray toward +x and count an edge only when p is strictly left of it, directed \
+                upward: (hi − lo) × (p − lo) > 0",
+        )?;
+    }
+    Ok(format!("{} points, 2 shared edges, 2 points on edges", table.len()))
 }
 
 pub(super) fn winding_cases(winding_number: WindingFn) -> CheckResult {
@@ -334,6 +350,19 @@ pub(super) fn polygon_cases(hit_polygon: PolygonFn) -> CheckResult {
         let case = format!("a degenerate polygon with {} vertices, {}", poly.len(), show_ray(&down));
         ensure(got.is_none(), case, "None", show_hit(&got), why)?;
     }
+    // Three vertices are a polygon too: the triangle (0, 0, −1), (2, 0, −1), (0, 2, −1), hit from
+    // above at (0.5, 0.5): t = 2.
+    let triangle = [Vec3::new(0.0, 0.0, -1.0), Vec3::new(2.0, 0.0, -1.0), Vec3::new(0.0, 2.0, -1.0)];
+    let r = ray([0.5, 0.5, 1.0], [0.0, 0.0, -1.0]);
+    let got = hit_polygon(&r, &triangle, ALL);
+    let case = format!("the triangle (0, 0, −1), (2, 0, −1), (0, 2, −1) as a polygon, {}", show_ray(&r));
+    close(
+        case,
+        got.map_or(Float::NAN, |h| h.t),
+        2.0,
+        TOL,
+        "three vertices make a polygon: only fewer are None",
+    )?;
     let along = ray([-1.0, 1.0, 1.0], [1.0, 0.0, 0.0]);
     let got = hit_polygon(&along, &square_in_plane(2), ALL);
     ensure(
@@ -343,7 +372,7 @@ pub(super) fn polygon_cases(hit_polygon: PolygonFn) -> CheckResult {
         show_hit(&got),
         "n·d = 0: a ray parallel to the plane has no hit",
     )?;
-    Ok("3 axis planes × 3 rays, a tilted quad, the pentagram, 4 degenerate cases".into())
+    Ok("3 axis planes × 3 rays, a tilted quad, the pentagram, a triangle, 4 degenerate cases".into())
 }
 
 #[cfg(test)]

@@ -17,6 +17,19 @@ pub(super) const CLIP: &str =
 pub(super) const NAN_PLANE: &str = "an origin on a slab plane of a parallel ray gives (plane − o)·(1/0) = 0·∞ = \
     NaN: order the planes by the sign of 1/d (never NaN), not by comparing the t's, and let a NaN end \
     count as unbounded";
+pub(super) const NEGATIVE_EXIT: &str = "a negative exit t is widened by (1 − 2γ₃), toward +∞, as a positive one is \
+    by (1 + 2γ₃): t_far *= if t_far ≥ 0 { 1 + 2γ₃ } else { 1 − 2γ₃ }";
+pub(super) const PARALLEL_OUTSIDE: &str = "a parallel ray outside a slab never enters it: 1/0 = ±∞ makes the slab's \
+    span (∞, ∞) or (−∞, −∞), empty; keep those ends infinite (widening −∞ by a factor 0 gives NaN)";
+
+/// How far each end of hit_slabs' span may be from the exact one, relative to it: an entry
+/// carries three roundings (the difference, the reciprocal, the product), at most γ₃; an exit
+/// the same three, then its widening by 2γ₃ and the rounding of that product, 3γ₃ + ε/2 and
+/// second-order terms (about 3.4γ₃; the reference's measured worst is 2.9γ₃ over 40,000 rays,
+/// in f32 and f64). 4γ₃ (7.2e-7 in f32, 1.3e-15 in f64) holds both, with room for rounding the
+/// exact fraction to f64 (2⁻⁵³ relative, a third of γ₃ in an f64 build). A negative exit
+/// multiplied by a factor near 0 where 1 − 2γ₃ belongs is off by nearly 100 %.
+pub(super) const SPAN_TOL: Float = 4.0 * gamma(3);
 
 /// Expects `Some((t0, t1))` with t0 within TOL·t0 of `enter` and t1 in
 /// [exit, exit·(1 + 8ε)] (the exit may be widened by 2γ₃ ≈ 3.6ε).
@@ -70,14 +83,7 @@ pub(super) fn slabs_cases(hit_slabs: SlabsFn) -> CheckResult {
     let r = ray([3.0, 0.0, 0.0], [1.0, 0.1, 0.0]);
     let back = Interval::new(-10.0, 10.0);
     let case = format!("cube [−1, 1]³, {}, range (−10, 10) (the box lies behind the origin)", show_ray(&r));
-    expect_span(
-        &case,
-        hit_slabs(&r, LO, HI, back),
-        -4.0,
-        -2.0,
-        "a negative exit t is widened by (1 − 2γ₃), toward +∞, as a positive one is by (1 + 2γ₃): \
-         t_far *= if t_far ≥ 0 { 1 + 2γ₃ } else { 1 − 2γ₃ }",
-    )?;
+    expect_span(&case, hit_slabs(&r, LO, HI, back), -4.0, -2.0, NEGATIVE_EXIT)?;
     // Misses.
     for (r, range, why) in [
         (ray([-3.0, 0.0, 0.0], [1.0, 1.0, 0.0]), ALL, "x [2, 4] and y [−1, 1] do not overlap: no hit"),
@@ -96,7 +102,28 @@ pub(super) fn slabs_cases(hit_slabs: SlabsFn) -> CheckResult {
         let case = format!("cube [−1, 1]³, {}, range ({}, {})", show_ray(&r), num(range.min), num(range.max));
         ensure(got.is_none(), case, "None", show_span(&got), why)?;
     }
-    Ok("5 hits and 3 misses".into())
+    // The range is open: a span that touches it only at an end is no hit. The box's own span
+    // first, over (0, ∞), then the ranges that end where it starts and start where it ends.
+    let r = ray([-3.0, 0.25, 0.5], [1.0, 0.125, -0.0625]);
+    let Some((t0, t1)) = hit_slabs(&r, LO, HI, ALL) else {
+        return Err(fail(format!("cube [−1, 1]³, {}", show_ray(&r)), "a hit, about (2, 4)", "None", CLIP));
+    };
+    for (range, end) in [
+        (Interval::new(0.0, t0), "ends at the span's entry"),
+        (Interval::new(t1, 100.0), "starts at its exit"),
+    ] {
+        let got = hit_slabs(&r, LO, HI, range);
+        let case =
+            format!("cube [−1, 1]³, {}, range ({}, {}): {end}", show_ray(&r), num(range.min), num(range.max));
+        ensure(
+            got.is_none(),
+            case,
+            "None",
+            show_span(&got),
+            "the range is open, min < t < max: test t_enter < range.max and t_exit > range.min",
+        )?;
+    }
+    Ok("5 hits, 3 misses, the open range's ends".into())
 }
 
 pub(super) fn slabs_extreme(hit_slabs: SlabsFn) -> CheckResult {
@@ -124,13 +151,7 @@ pub(super) fn slabs_extreme(hit_slabs: SlabsFn) -> CheckResult {
         let got = hit_slabs(&r, LO, HI, ALL);
         let case = format!("cube [−1, 1]³, {} (axis-parallel, outside a slab)", show_ray(&r));
         no_nan(&case, got)?;
-        ensure(
-            got.is_none(),
-            case,
-            "None",
-            show_span(&got),
-            "a parallel ray outside a slab never enters it",
-        )?;
+        ensure(got.is_none(), case, "None", show_span(&got), PARALLEL_OUTSIDE)?;
     }
     // Origins exactly on a face plane or an edge line, with +0 and −0 components: inside.
     for (o, d) in [
@@ -182,10 +203,15 @@ pub(super) fn slabs_extreme(hit_slabs: SlabsFn) -> CheckResult {
         )?;
     }
     // Random rays on a 1/16 grid (exact in any float), half aimed exactly at a face, an
-    // edge or a corner, against exact integer arithmetic: no false misses, never NaN.
+    // edge or a corner; of each, half in the range (0, ∞) and half in a range (−a/4, b/4)
+    // that reaches back, where the aimed ones point away (so negative exits count). Against
+    // exact integer arithmetic: no false misses, never NaN, and both ends of the span within
+    // SPAN_TOL of the exact ones.
     const SCALE: Float = 1.0 / 16.0;
     let to_vec = |v: [i64; 3]| Vec3::new(v[0] as Float, v[1] as Float, v[2] as Float) * SCALE;
     let mut rng = Rng::new(3);
+    // The ranges' own stream: the rays are those drawn before the ranges were added.
+    let mut ranges = Rng::new(4);
     let mut exact_count = 0;
     for n in 0..4000 {
         let mut lo = [0i64; 3];
@@ -212,14 +238,35 @@ pub(super) fn slabs_extreme(hit_slabs: SlabsFn) -> CheckResult {
         if d == [0; 3] {
             continue;
         }
+        let (range, min, max) = if n % 4 < 2 {
+            (ALL, Ratio::from(0), None)
+        } else {
+            let (a, b) = (ranges.int(0, 40), ranges.int(1, 40));
+            (Interval::new(-(a as Float) / 4.0, b as Float / 4.0), Ratio::new(-a, 4), Some(Ratio::new(b, 4)))
+        };
+        // With a range that reaches back, the aimed rays point away from their target: the box
+        // is behind the origin, its boundary at t = −1.
+        let d = if n % 4 == 3 { d.map(|c| -c) } else { d };
         let r = Ray::new(to_vec(o), to_vec(d));
-        let got = hit_slabs(&r, to_vec(lo), to_vec(hi), ALL);
-        let case = format!("box {}..{}, {}", vec3(to_vec(lo)), vec3(to_vec(hi)), show_ray(&r));
+        let got = hit_slabs(&r, to_vec(lo), to_vec(hi), range);
+        let case = format!(
+            "box {}..{}, {}, range ({}, {})",
+            vec3(to_vec(lo)),
+            vec3(to_vec(hi)),
+            show_ray(&r),
+            num(range.min),
+            num(range.max)
+        );
         no_nan(&case, got)?;
-        let exact = exact_hits(o, d, lo, hi);
-        exact_count += exact as u32;
-        if exact && got.is_none() {
-            let cause = if (0..3).any(|i| d[i] == 0) {
+        let exact = exact_span(o, d, lo, hi);
+        let hits =
+            exact.is_some_and(|(enter, exit)| enter <= exit && max.is_none_or(|m| enter < m) && exit > min);
+        exact_count += hits as u32;
+        if hits && got.is_none() {
+            // (The hand cases above meet a mishandled 0·∞ first.)
+            let cause = if exact.is_some_and(|(_, exit)| exit < Ratio::from(0)) {
+                NEGATIVE_EXIT
+            } else if (0..3).any(|i| d[i] == 0) {
                 NAN_PLANE
             } else {
                 "a ray aimed exactly at the box's boundary hits it (exact arithmetic says so): rounding \
@@ -227,11 +274,58 @@ pub(super) fn slabs_extreme(hit_slabs: SlabsFn) -> CheckResult {
             };
             return Err(fail(case, "a hit (exact arithmetic)", "None (no hit)", cause));
         }
+        match (exact, got) {
+            (None, Some(_)) => return Err(fail(case, "None", show_span(&got), PARALLEL_OUTSIDE)),
+            (Some(span), Some(got)) => exact_ends(&case, span, min, max, got)?,
+            _ => {}
+        }
     }
     Ok(format!(
-        "23 hand cases and 4000 random rays ({exact_count} hits by exact arithmetic): no false miss, no \
-            NaN"
+        "23 hand cases and 4000 random rays ({exact_count} hits by exact arithmetic, half of the rays in \
+            a range reaching back): no false miss, no NaN, each end within 4γ₃ of the exact one"
     ))
+}
+
+/// Fails unless the span `(t0, t1)` that hit_slabs returned in the range (min, max) agrees with
+/// the exact `(enter, exit)`: t0 within SPAN_TOL of max(enter, min), t1 within SPAN_TOL of
+/// min(exit, max) and not below it (the widened exit is conservative), relative to enter and
+/// exit. Clipping is 1-Lipschitz, so a clipped end is no farther off than the end it clips.
+fn exact_ends(
+    case: &str,
+    (enter, exit): (Ratio, Ratio),
+    min: Ratio,
+    max: Option<Ratio>,
+    (t0, t1): (Float, Float),
+) -> Result<(), Failure> {
+    let (want0, want1) = (enter.max(min), max.map_or(exit, |m| exit.min(m)));
+    let tol = SPAN_TOL as f64;
+    let entry_ok = (t0 as f64 - want0.to_f64()).abs() <= tol * enter.to_f64().abs();
+    // Below the exact exit by more than the rounding of the exact fraction to f64.
+    let exit_low = (t1 as f64) < want1.to_f64() - f64::EPSILON * exit.to_f64().abs();
+    let exit_ok = !exit_low && (t1 as f64 - want1.to_f64()).abs() <= tol * exit.to_f64().abs();
+    if entry_ok && exit_ok {
+        return Ok(());
+    }
+    let expected = format!(
+        "({want0}, {want1}) ≈ ({}, {}) (exact arithmetic), each within 4γ₃ = {:.1e} relative, t1 not \
+            below {want1}",
+        want0.to_f64() as Float,
+        want1.to_f64() as Float,
+        SPAN_TOL
+    );
+    let cause = if !exit_ok && exit < Ratio::from(0) {
+        NEGATIVE_EXIT
+    } else if !entry_ok {
+        "t0 = max(t_enter, range.min), with t_enter the latest slab entry, (minᵢ − oᵢ)/dᵢ or \
+            (maxᵢ − oᵢ)/dᵢ by the sign of dᵢ, not widened: within γ₃ of the exact entry"
+    } else if exit_low {
+        "rounding put t_exit below the exact exit: widen each slab's exit by 2γ₃ (t_far·(1 + 2γ₃)), \
+            so rounding never turns a hit into a miss"
+    } else {
+        "t1 = min(t_exit, range.max), t_exit the earliest slab exit widened by 2γ₃ only: a few γ₃ \
+            beyond the exact exit, no more"
+    };
+    Err(fail(case, expected, format!("({t0}, {t1})"), cause))
 }
 
 pub(super) fn box_cases(hit_box: BoxFn) -> CheckResult {
@@ -330,6 +424,8 @@ mod tests {
         no_widen: bool,
         strict: bool,
         no_clip: bool,
+        /// The factor of a negative exit, for the reference's 1 − 2γ₃.
+        widen_down: Option<Float>,
     }
 
     thread_local! {
@@ -359,7 +455,7 @@ mod tests {
             if far.is_nan() {
                 far = Float::INFINITY;
             }
-            far *= if far >= 0.0 { 1.0 + widen } else { 1.0 - widen };
+            far *= if far >= 0.0 { 1.0 + widen } else { m.widen_down.unwrap_or(1.0 - widen) };
             t_enter = t_enter.max(near);
             t_exit = t_exit.min(far);
         }
@@ -394,6 +490,27 @@ mod tests {
         // Without the 2γ₃ widening, a ray aimed exactly at an edge can miss by an ulp.
         // Measured: caught in both precisions (a ray aimed at an edge on the 1/16 grid).
         caught(slabs_extreme(slabs(Slabs { no_widen: true, ..Slabs::default() })), "widen");
+    }
+
+    #[test]
+    fn negative_exit_widened_toward_zero_or_away_is_caught() {
+        // A negative exit multiplied by ≈ 0 (1e-6, or 2γ₃ for 1 − 2γ₃): the span of a box behind
+        // the origin ends at t ≈ 0. The unit check sees it in one case; the extreme check in
+        // the random rays whose range reaches back, against the exact exit.
+        for factor in [1e-6, 2.0 * gamma(3)] {
+            let m = Slabs { widen_down: Some(factor), ..Slabs::default() };
+            caught(slabs_cases(slabs(m)), NEGATIVE_EXIT);
+            caught(slabs_extreme(slabs(m)), NEGATIVE_EXIT);
+        }
+        // A factor 0 also turns −∞ (a parallel ray beside a slab) into NaN, which the hand
+        // cases meet first.
+        let zero = Slabs { widen_down: Some(0.0), ..Slabs::default() };
+        caught(slabs_cases(slabs(zero)), NEGATIVE_EXIT);
+        caught(slabs_extreme(slabs(zero)), PARALLEL_OUTSIDE);
+        // Multiplied by 1 + 2γ₃, a negative exit moves toward −∞: below the exact exit, and a
+        // box behind the origin aimed at exactly is missed.
+        let away = Slabs { widen_down: Some(1.0 + 2.0 * gamma(3)), ..Slabs::default() };
+        caught(slabs_extreme(slabs(away)), NEGATIVE_EXIT);
     }
 
     /// hit_box from hit_slabs with a planted mistake: `inside_t0` reports t0 when

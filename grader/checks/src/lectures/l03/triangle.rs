@@ -94,6 +94,19 @@ pub(super) fn triangle_cases(method: TriangleFn) -> CheckResult {
         TOL,
         "t is in units of dir: do not normalise it",
     )?;
+    // Two triangles off the origin, in z = 0, hit straight down at points with exact barycentrics:
+    // (0, 1), (1, 1), (½, −1) at (½, 0), β = ¼, γ = ½; (0, 1), (1, −1), (−1, 1) at (0, ½),
+    // β = γ = ¼. In the first c + a is parallel to b − a, in the second c − a to b + a: a
+    // degeneracy test on a wrong pair of edges refuses them.
+    for (a, b, c, x, y, beta, gamma) in [
+        (Vec3::Y, Vec3::new(1.0, 1.0, 0.0), Vec3::new(0.5, -1.0, 0.0), 0.5, 0.0, 0.25, 0.5),
+        (Vec3::Y, Vec3::new(1.0, -1.0, 0.0), Vec3::new(-1.0, 1.0, 0.0), 0.0, 0.5, 0.25, 0.25),
+    ] {
+        let r = down(x, y);
+        let case = format!("triangle {}, {}, {}, {}", vec3(a), vec3(b), vec3(c), show_ray(&r));
+        let cause = "a triangle is degenerate when (b − a) × (c − a) = 0, its two edges from a parallel";
+        expect_tri(&case, method(&r, a, b, c, ALL), 2.0, beta, gamma, TOL, cause)?;
+    }
     // Misses: outside each edge, beyond the range, behind the origin.
     for (r, range, why) in [
         (down(0.6, 0.6), ALL, "β + γ = 1.2 > 1: outside"),
@@ -137,7 +150,7 @@ pub(super) fn triangle_cases(method: TriangleFn) -> CheckResult {
         show_tri(&got),
         "a degenerate triangle has no plane: return None",
     )?;
-    Ok("7 hits, 5 misses, 6 parallel rays, a degenerate triangle".into())
+    Ok("9 hits, 5 misses, 6 parallel rays, a degenerate triangle".into())
 }
 
 pub(super) fn edge_cases(edge: EdgeFn) -> CheckResult {

@@ -96,8 +96,65 @@ pub(super) fn cone_cases(hit: ShapeFn) -> CheckResult {
         &[],
         "a steep ray (a < 0): the lower nappe is the half-line beyond the larger root when d_z < 0",
     )?;
+    // Parallel to a side line with b = 0 (a = 0 and f = c along the whole ray): beside the cone,
+    // from (−1, 1, 0) along (1, 0, 1), c = 1 > 0: no hit. Along a side line itself, c = 0: the
+    // ray lies in the surface, and the solid is where the slab cuts it. From (−2, 0, −1) it
+    // meets the base's rim at t = 1 (a rim: the base's −z or the side's (−1, 0, 1)/√2); from
+    // (−1, 0, 2) the apex at t = 1, where the normal is +z.
+    let flat_f = "a = 0 and b = 0: f = c along the whole ray, inside everywhere when c ≤ 0 (on the surface \
+        at c = 0), nowhere when c > 0";
+    let r = ray([-1.0, 1.0, 0.0], [1.0, 0.0, 1.0]);
+    let got = hit(&r, ALL);
+    ensure(got.is_none(), case(&r), "None", show_hit(&got), flat_f)?;
+    let r = ray([-2.0, 0.0, -1.0], [1.0, 0.0, 1.0]);
+    let got = hit(&r, ALL);
+    let Some(h) = got else {
+        return Err(fail(case(&r), "t = 1 at the rim (−1, 0, 0)", "None (no hit)", flat_f));
+    };
+    close(case(&r), h.t, 1.0, TOL, flat_f)?;
+    let rim = near3(h.normal, -Vec3::Z, TOL) || near3(h.normal, side_out, TOL);
+    ensure(rim, case(&r), "the normal −z or (−1, 0, 1)/√2 (a rim)", vec3(h.normal), gradient)?;
+    let r = ray([-1.0, 0.0, 2.0], [1.0, 0.0, -1.0]);
+    expect_hit(&case(&r), hit(&r, ALL), 1.0, Vec3::Z, true, &[], apex)?;
+    // Parallel to a side line with |b| ≠ 1: from (−0.375, −0.5, 0) on the base along (3, 4, 5),
+    // b = 1.875, c = −0.609375, the one root t = −c/(2b) = 0.1625, leaving through the side at
+    // (0.1125, 0.15, 0.8125).
+    let r = ray([-0.375, -0.5, 0.0], [3.0, 4.0, 5.0]);
+    let t = (0.609375 / 3.75) as Float;
+    let outward = Vec3::new(0.1125, 0.15, 0.1875).normalize();
+    expect_hit(&case(&r), hit(&r, ALL), t, -outward, false, &[], linear)?;
+    // Tangent to the side, flatter than it (a = 1 > 0): along x at y = z = ½, the discriminant
+    // is 0 exactly, one touching point t = 2 at (0, ½, ½).
+    let r = ray([-2.0, 0.5, 0.5], [1.0, 0.0, 0.0]);
+    let touch = "a zero discriminant is one double root, a touching ray: reject only b² − ac < 0";
+    let got = hit(&r, ALL);
+    let Some(h) = got else { return Err(fail(case(&r), "t = 2 at (0, ½, ½)", "None (no hit)", touch)) };
+    close(case(&r), h.t, 2.0, TOL * 2.0, touch)?;
+    // The normal is across the ray there: either way round is facing it.
+    let n = Vec3::new(0.0, SQRT_HALF, SQRT_HALF);
+    ensure(
+        near3(h.normal, n, TOL) || near3(h.normal, -n, TOL),
+        case(&r),
+        "the normal ±(0, 1, 1)/√2",
+        vec3(h.normal),
+        gradient,
+    )?;
+    // From just inside the side at z = ½ (x = −0.4999, radius 0.5), out along +x: the far root
+    // t = 0.5 − x (in f64) is free of cancellation, c ≈ −10⁻⁴ notwithstanding.
+    let x0: Float = -0.4999;
+    let r = ray([x0, 0.0, 0.5], [1.0, 0.0, 0.0]);
+    expect_hit(
+        &case(&r),
+        hit(&r, ALL),
+        (0.5 - x0 as f64) as Float,
+        Vec3::new(-SQRT_HALF, 0.0, -SQRT_HALF),
+        false,
+        &[],
+        "the far root loses nothing to cancellation: q = −(b + sign(b)·√(b² − ac)) adds two numbers of one \
+            sign, then t = q/a and c/q",
+    )?;
     no_rim_leaks(hit, true)?;
-    Ok("10 hand cases and 1,000 rim rays".into())
+    Ok("16 hand cases and 1,000 rim rays".into())
 }
 
 #[cfg(test)]

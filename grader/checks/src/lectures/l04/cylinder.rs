@@ -192,8 +192,38 @@ pub(super) fn cylinder_cases(hit: ShapeFn) -> CheckResult {
         let got = hit(&r, ALL);
         ensure(got.is_none(), case(&r), "None", show_hit(&got), why)?;
     }
+    // Parallel to the axis in the side itself (a = 0, c = 0): from (1, 0, −1) up, the solid is
+    // where the slab cuts the line, entered at the base's rim at t = 1 (a rim: −z or +x).
+    let r = ray([1.0, 0.0, -1.0], [0.0, 0.0, 1.0]);
+    let got = hit(&r, ALL);
+    let Some(h) = got else {
+        return Err(fail(case(&r), "t = 1 at the rim (1, 0, 0)", "None (no hit)", axis_parallel));
+    };
+    close(case(&r), h.t, 1.0, TOL, axis_parallel)?;
+    let rim = near3(h.normal, -Vec3::Z, TOL) || near3(h.normal, Vec3::X, TOL);
+    ensure(
+        rim,
+        case(&r),
+        "the normal −z or +x (a rim)",
+        vec3(h.normal),
+        "a ray on the side is inside the closed cylinder",
+    )?;
+    // From just inside the side (x = −0.9999) out along +x: the far root t = 1 − x (in f64) is
+    // free of cancellation, c ≈ −2·10⁻⁴ notwithstanding.
+    let x0: Float = -0.9999;
+    let r = ray([x0, 0.0, 0.5], [1.0, 0.0, 0.0]);
+    expect_hit(
+        &case(&r),
+        hit(&r, ALL),
+        (1.0 - x0 as f64) as Float,
+        -Vec3::X,
+        false,
+        &[],
+        "the far root loses nothing to cancellation: q = −(b + sign(b)·√(b² − ac)) adds two numbers of one \
+            sign, then t = q/a and c/q",
+    )?;
     no_rim_leaks(hit, false)?;
-    Ok("12 hand cases and 1,000 rim rays".into())
+    Ok("14 hand cases and 1,000 rim rays".into())
 }
 
 #[derive(Clone, Copy)]

@@ -57,7 +57,7 @@ pub(super) fn disk_cases(disk: DiskFn) -> CheckResult {
         let d = disk(u);
         let case = format!("u = {}", v2(u));
         let shown = format!("{} (± 4ε = {:.1e} each)", v2(expected), 4.0 * EPS);
-        ensure((d - expected).abs().max_element() <= 4.0 * EPS, case, shown, v2(d), cause)?;
+        ensure(!d.is_nan() && (d - expected).abs().max_element() <= 4.0 * EPS, case, shown, v2(d), cause)?;
     }
     Ok(format!("{} cases", 1 + 17 * 17 + cases.len()))
 }
@@ -139,19 +139,30 @@ pub(super) fn sample_light_cases(sample: SampleFn) -> CheckResult {
             "the ball's point is center + radius·(dₓe₁ + d_y e₂) with d = concentric_disk(u)",
         )?;
     }
-    // From the oblique (3, −4, 12) (|p| = 13): the disc turns to face it, (q − c)·p/13 = 0.
-    // q from values up to 15: 64ε.
-    let p = v(3.0, -4.0, 12.0);
+    // The ball moved to c = (1, 2, 3) and seen from the oblique c + (3, −4, 12) (13 away): the
+    // disc turns to face the point, (q − c)·w = 0 with w = (3, −4, 12)/13, and q stays 2·|d| from
+    // c. A w from point + center, (5, 0, 18), tilts the disc. q from values up to 18: 64ε.
+    let c = v(1.0, 2.0, 3.0);
+    let p = c + v(3.0, -4.0, 12.0);
+    let moved = light(LightKind::Sphere { center: c, radius: 2.0, attenuation: Attenuation::default() });
     for u in [Vec2::new(1.0, 0.5), Vec2::new(0.1, 0.8)] {
-        let case = format!("ball r = 2 at the origin seen from (3, −4, 12), u = {}", v2(u));
-        let s = sample(&ball(), p, u);
+        let case = format!("ball r = 2 at (1, 2, 3) seen from (4, −2, 15), u = {}", v2(u));
+        let s = sample(&moved, p, u);
         let q = p + s.distance * s.direction;
         close(
             &case,
-            q.dot(p / 13.0),
+            (q - c).dot(v(3.0, -4.0, 12.0) / 13.0),
             0.0,
             64.0 * EPS,
             "the disc is perpendicular to w = (point − center)/|point − center|, whatever the point",
+        )?;
+        let ring = (2.0 * u - Vec2::ONE).abs().max_element();
+        close(
+            &case,
+            (q - c).length(),
+            2.0 * ring,
+            64.0 * EPS,
+            "the ball's point is center + radius·(dₓe₁ + d_y e₂) with d = concentric_disk(u)",
         )?;
     }
     // A point light at (0, 2, 0) (no attenuation) and a directional light straight down:

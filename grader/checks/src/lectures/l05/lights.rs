@@ -202,6 +202,15 @@ pub(super) fn illuminate_cases(illuminate: IlluminateFn) -> CheckResult {
         2.0 * EPS,
         "without samples an area light stands at its centre corner + ½(edge_u + edge_v)",
     )?;
+    // The direction too: corner − ½(edge_u + edge_v) and corner + ½(edge_u − edge_v) are 3 away as
+    // well. One normalisation of (1, 2, 2): 2ε.
+    close3(
+        case,
+        s.direction,
+        v(1.0, 2.0, 2.0) / 3.0,
+        2.0 * EPS,
+        "the rect's centre is corner + ½(edge_u + edge_v) = (1, 2, 2): L points to it",
+    )?;
     let case = "ball light r = 2 at (0, 3, 0) seen from the origin";
     let ball = light(LightKind::Sphere {
         center: v(0.0, 3.0, 0.0),

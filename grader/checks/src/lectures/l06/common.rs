@@ -4,14 +4,55 @@
 #![allow(clippy::result_large_err)]
 
 pub(super) use l05_shading::LightSample;
-pub(super) use l06_shadows::{
-    ShadowMode, ShadowSettings, Surface, occluded, offset_origin, offset_origin_fixed_normal,
-    offset_origin_fixed_t, point_seed, shade_area_light, shade_with_shadows, stratified, transmittance,
-    visibility,
-};
+pub(super) use l06_shadows::{ShadowMode, ShadowSettings, Surface, point_seed};
 pub(super) use raylab::random::Rng;
 pub(super) use raylab::scene::{Attenuation, Light, LightKind, Material};
-pub(super) use raylab::stats::{Counter, measure};
+pub(super) use raylab::stats::Counter;
+
+pub(super) use crate::judge::measured;
+
+// The student's functions, each value taken through `judge::student` (the lecture is `judged`).
+crate::judge::student_fns! { l06_shadows:
+    fn offset_origin(p: Vec3, n: Vec3, dir: Vec3, from: Vec3) -> Vec3;
+    fn offset_origin_fixed_t(p: Vec3, n: Vec3, dir: Vec3, from: Vec3) -> Vec3;
+    fn offset_origin_fixed_normal(p: Vec3, n: Vec3, dir: Vec3, from: Vec3) -> Vec3;
+    fn occluded(scene: &dyn Intersector, from: Vec3, sample: &LightSample) -> bool;
+    fn transmittance(scene: &dyn Intersector, materials: &[Material], from: Vec3, sample: &LightSample) -> Color;
+    fn visibility(
+        scene: &dyn Intersector,
+        materials: &[Material],
+        surface: &Surface,
+        sample: &LightSample,
+        mode: ShadowMode,
+    ) -> Color;
+    fn shade_with_shadows(
+        scene: &dyn Intersector,
+        materials: &[Material],
+        surface: &Surface,
+        lights: &[Light],
+        ambient: Color,
+        settings: ShadowSettings,
+    ) -> Color;
+    fn shade_area_light(
+        scene: &dyn Intersector,
+        materials: &[Material],
+        surface: &Surface,
+        light: &Light,
+        settings: ShadowSettings,
+    ) -> Color;
+}
+
+/// `l06_shadows::stratified`, through `judge::student`: the samples and the generator as the
+/// student's code left it.
+#[track_caller]
+pub(super) fn stratified(n: u32, rng: &mut Rng) -> Vec<Vec2> {
+    let (samples, after) = crate::judge::student(|| {
+        let samples = l06_shadows::stratified(n, rng);
+        (samples, rng.clone())
+    });
+    *rng = after;
+    samples
+}
 pub(super) use raylab::{BLACK, Color, Float, Hit, Intersector, Interval, Ray, Vec2, Vec3, WHITE, radians};
 pub(super) use std::sync::atomic::{AtomicUsize, Ordering};
 

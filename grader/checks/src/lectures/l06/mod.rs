@@ -9,7 +9,7 @@
 use crate::check::Meta;
 
 declare_checks! {
-    "l06";
+    "l06", judged;
     Meta::unit(
         "offset_origin",
         "along ±n to the side dir leaves to, by a few ulp of p and of the ray's origin, never zero",

@@ -52,9 +52,11 @@ pub(super) fn occluded_cases(occluded: OccludedFn) -> CheckResult {
     // One any-hit query, no closest hit, one shadow ray counted.
     let case = "unit sphere at (0, 2, 0), directional light straight up: the queries asked";
     let scene = Scene::new(&[sphere(0.0, 2.0, 0.0, 1.0, 0)]);
-    let (_, stats) = measure(|| occluded(&scene, Vec3::ZERO, &toward(Vec3::Y)));
-    let (any, closest) =
-        (scene.any_calls.load(Ordering::Relaxed), scene.closest_calls.load(Ordering::Relaxed));
+    // The queries are the student's code's doing: counted in the same value.
+    let ((any, closest), stats) = measured(|| {
+        occluded(&scene, Vec3::ZERO, &toward(Vec3::Y));
+        (scene.any_calls.load(Ordering::Relaxed), scene.closest_calls.load(Ordering::Relaxed))
+    });
     ensure(
         any == 1 && closest == 0,
         case,
@@ -81,7 +83,7 @@ pub(super) fn through(
 ) -> (Color, u64) {
     let scene = Scene::new(shapes);
     let sample = toward_point(Vec3::ZERO, v(0.0, 10.0, 0.0));
-    let (t, stats) = measure(|| transmittance(&scene, materials, Vec3::ZERO, &sample));
+    let (t, stats) = measured(|| transmittance(&scene, materials, Vec3::ZERO, &sample));
     (t, stats.get(Counter::ShadowRays))
 }
 
@@ -92,7 +94,7 @@ pub(super) fn transmittance_cases(transmittance: TransmittanceFn) -> CheckResult
     let half = see_through(Color::splat(0.5));
     let show = |(c, n): (Color, u64)| format!("{} after {n} segments", vec3(c));
     // Each surface crossing filters by k_t: products of powers of two, exact.
-    let cases: [TransmittanceCase; 6] = [
+    let cases: [TransmittanceCase; 8] = [
         (
             "a sphere of k_t = ½ at (0, 4, 0), light at (0, 10, 0)",
             vec![sphere(0.0, 4.0, 0.0, 1.0, 0)],
@@ -129,10 +131,29 @@ pub(super) fn transmittance_cases(transmittance: TransmittanceFn) -> CheckResult
             Color::splat(0.5),
             2,
         ),
+        // Found by mutation testing: remaining /= hit.t passed (the far plane is 6 beyond the
+        // first, the range 10/2 = 5 instead of 8).
+        (
+            "planes y = 2 and y = 8 of k_t = ½, light at (0, 10, 0)",
+            vec![floor(2.0, 0), floor(8.0, 0)],
+            vec![half.clone()],
+            Color::splat(0.25),
+            3,
+        ),
+        // Found by mutation testing: a range of distance / LIGHT_MARGIN passed.
+        (
+            "a plane y = 10 of k_t = ½ through the light at (0, 10, 0)",
+            vec![floor(10.0, 0)],
+            vec![half.clone()],
+            WHITE,
+            1,
+        ),
     ];
     for (case, shapes, materials, expected, segments) in cases {
         let got = through(transmittance, &shapes, &materials);
-        let cause = if expected == BLACK && got.0 == BLACK && got.1 > segments {
+        let cause = if case.starts_with("planes") && got.0 == Color::splat(0.5) {
+            "after each blocker the light is nearer by the t travelled: remaining −= hit.t"
+        } else if expected == BLACK && got.0 == BLACK && got.1 > segments {
             "an opaque blocker (k_t = 0) ends the walk: stop at black, no more segments"
         } else if got.0 == 2.0 * expected && expected != BLACK {
             "each surface crossing filters by k_t: a sphere is crossed twice, in and out"
@@ -142,6 +163,9 @@ pub(super) fn transmittance_cases(transmittance: TransmittanceFn) -> CheckResult
             "after each blocker the light is nearer by the t travelled: shrink the range (remaining −= hit.t)"
         } else if got.0 == expected {
             "count one Counter::ShadowRays per segment: to each blocker, and on to the light"
+        } else if case.contains("through the light") {
+            "the range ends short of the light: distance·(1 − 4ε) (LIGHT_MARGIN), so a surface the light \
+             sits on does not filter it"
         } else if expected == BLACK {
             "an opaque blocker (k_t = 0) blocks: stop the walk at black"
         } else {
@@ -166,7 +190,7 @@ pub(super) fn transmittance_cases(transmittance: TransmittanceFn) -> CheckResult
         (0..20).map(|i| sphere(0.0, 2.0 + 2.5 * i as Float, 0.0, 1.0, 0)).collect();
     let scene = Scene::new(&shapes);
     let sample = toward_point(Vec3::ZERO, v(0.0, 100.0, 0.0));
-    let (t, stats) = measure(|| transmittance(&scene, &[see_through(WHITE)], Vec3::ZERO, &sample));
+    let (t, stats) = measured(|| transmittance(&scene, &[see_through(WHITE)], Vec3::ZERO, &sample));
     let got = (t, stats.get(Counter::ShadowRays));
     ensure(
         got == (WHITE, 41),
@@ -175,7 +199,7 @@ pub(super) fn transmittance_cases(transmittance: TransmittanceFn) -> CheckResult
         show(got),
         "walk through every surface up to the light",
     )?;
-    Ok("8 cases".into())
+    Ok("10 cases".into())
 }
 
 #[cfg(test)]

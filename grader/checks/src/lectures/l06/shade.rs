@@ -89,7 +89,7 @@ pub(super) fn shade_cases(shade: ShadeFn) -> CheckResult {
         let s = surface(&materials[0], hit, eye);
         let scene = Scene::new(shapes);
         let settings = ShadowSettings { mode, area_samples: 16 };
-        let (c, stats) = measure(|| shade(&scene, &materials, &s, lights, AMBIENT, settings));
+        let (c, stats) = measured(|| shade(&scene, &materials, &s, lights, AMBIENT, settings));
         (c, stats.get(Counter::ShadowRays))
     };
     let floor_and = |ball: usize| [floor(0.0, 0), sphere(0.0, 2.0, 0.0, 1.0, ball)];
@@ -162,7 +162,7 @@ pub(super) fn shade_cases(shade: ShadeFn) -> CheckResult {
         } else {
             "I = k_a ⊙ I_a + Σ visibility ⊙ shade_light(…, illuminate(light, p))"
         };
-        let ok = (got.0 - expected).abs().max_element() <= 2.0 * EPS && got.1 == rays;
+        let ok = crate::check::near3(got.0, expected, 2.0 * EPS) && got.1 == rays;
         ensure(ok, case, show((expected, rays)), show(got), cause)?;
     }
     // A spot aimed away (the point 63° off its 10° cone): nothing to add, no shadow ray.

@@ -58,13 +58,26 @@ pub(super) fn schlick_cases(schlick: FresnelFn) -> CheckResult {
         };
         close(case, r, expected as Float, tolerance, cause)?;
     }
+    // Glass to water at 30°, the ratio η_i/η_t = 1.5/1.33 ≠ η_i: sin²θ_t = 1.1278²·0.25 = 0.318,
+    // cos θ_t = 0.8258, R₀ = (0.17/2.83)² = 0.003608, R = 0.003768 (in f64 below, from the f32
+    // inputs). With η_i·η_t for the ratio, sin²θ_t = 0.995 and R ≈ 0.69. Tolerance 8ε: R is small
+    // and dR/dcos θ ≈ −0.005 there, so the roundings of the cosines barely move it.
+    let (eta_i, eta_t): (Float, Float) = (1.5, 1.33);
+    let cos_i = cos_deg(30.0);
+    let eta = wide(eta_i) / wide(eta_t);
+    let cos_t = (1.0 - eta * eta * (1.0 - wide(cos_i) * wide(cos_i))).sqrt();
+    let r0 = ((wide(eta_i) - wide(eta_t)) / (wide(eta_i) + wide(eta_t))).powi(2);
+    let expected = r0 + (1.0 - r0) * (1.0 - cos_t).powi(5);
+    let case = format!("glass to water (η_i = 1.5, η_t = 1.33) at 30°: cos θ_i = {}", num(cos_i));
+    let cause = "Snell's law takes the ratio of the indices: sin θ_t = (η_i/η_t)·sin θ_i";
+    close(case, schlick(cos_i, eta_i, eta_t), expected as Float, 8.0 * EPS, cause)?;
     // Past the critical angle: 60° and grazing from inside glass, sin²θ_t ≥ 1: R = 1.
     for cos_i in [0.5, 0.0] {
         let case = format!("glass to air at cos θ_i = {cos_i}: past the critical angle");
         let r = schlick(cos_i, 1.5, 1.0);
         close(case, r, 1.0, 0.0, "total internal reflection (sin²θ_t ≥ 1) reflects everything: R = 1")?;
     }
-    Ok("8 cases".into())
+    Ok("9 cases".into())
 }
 
 /// The exact reflectance in f64 from the angle, by the sine/tangent form of the

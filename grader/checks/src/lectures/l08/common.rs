@@ -2,8 +2,17 @@
 
 pub(super) use l01_transforms::Camera;
 pub(super) use l04_quadrics_transforms::BruteForce;
-pub(super) use l08_ray_tree::{TraceSettings, World, render, trace};
-pub(super) use raylab::stats::{Counter, RayStats, measure};
+pub(super) use l08_ray_tree::{TraceSettings, World};
+pub(super) use raylab::stats::{Counter, RayStats};
+
+pub(super) use crate::judge::{measured, student};
+
+// The student's functions, each value taken through `judge::student` (the lecture is `judged`).
+crate::judge::student_fns! { l08_ray_tree:
+    fn trace(world: &World, ray: &Ray, depth: u32, weight: Float, settings: &TraceSettings) -> Color;
+    fn render(world: &World, camera: &Camera, width: u32, height: u32, settings: &TraceSettings)
+        -> (Image, RayStats);
+}
 pub(super) use raylab::{Color, Float, Image, Ray, Scene, Vec3};
 
 pub(super) use crate::check::{CheckResult, close, ensure, fail, v, vec3};
@@ -45,7 +54,7 @@ pub(super) const fn rays(reflected: u64, refracted: u64, shadow: u64) -> Rays {
 pub(super) fn traced(trace: TraceFn, s: &Scene, ray: &Ray, settings: &TraceSettings) -> (Color, Rays) {
     let objects = BruteForce::new(&s.objects);
     let world = World::new(s, &objects);
-    let (color, stats) = measure(|| trace(&world, ray, 0, 1.0, settings));
+    let (color, stats) = measured(|| trace(&world, ray, 0, 1.0, settings));
     let counted = rays(
         stats.get(Counter::ReflectionRays),
         stats.get(Counter::RefractionRays),
@@ -54,8 +63,9 @@ pub(super) fn traced(trace: TraceFn, s: &Scene, ray: &Ray, settings: &TraceSetti
     (color, counted)
 }
 
+/// Never with a NaN in either (see `check::near3`).
 pub(super) fn near(a: Color, b: Color, tolerance: Float) -> bool {
-    (a - b).abs().max_element() <= tolerance
+    crate::check::near3(a, b, tolerance)
 }
 
 pub(super) fn same_color(
@@ -70,6 +80,24 @@ pub(super) fn same_color(
         case,
         format!("{} (± {tolerance:.1e})", vec3(expected)),
         vec3(got),
+        cause,
+    )
+}
+
+/// A traced colour and its rays against the expected ones: the colour within
+/// [`COLOR_TOL`] per channel, the rays exactly.
+pub(super) fn same_tree(
+    case: &str,
+    (color, counted): (Color, Rays),
+    expected: Color,
+    expected_rays: Rays,
+    cause: &str,
+) -> Result<(), crate::check::Failure> {
+    ensure(
+        counted == expected_rays && near(color, expected, COLOR_TOL),
+        case,
+        format!("{} (± {COLOR_TOL:.1e} each), {expected_rays}", vec3(expected)),
+        format!("{}, {counted}", vec3(color)),
         cause,
     )
 }

@@ -20,7 +20,7 @@ const TRACE_NEEDS: &[&str] = &[
 ];
 
 declare_checks! {
-    "l08";
+    "l08", judged;
     Meta::unit(
         "trace_ray",
         "by hand: a miss, a mirror, facing mirrors stopped by depth and by weight, total internal \

@@ -24,21 +24,24 @@ pub(super) fn three_balls() -> Scene {
 pub(super) fn render_cases(render: RenderFn) -> CheckResult {
     let s = three_balls();
     let (w, h) = (s.width, s.height);
-    let camera = Camera::from_scene(&s.camera, w, h).map_err(|e| {
-        fail(
-            "the camera of the check scene",
-            "a camera",
-            e.to_string(),
-            "01's PerspectiveCamera::new must accept it",
-        )
-    })?;
-    let objects = BruteForce::new(&s.objects);
-    let world = World::new(&s, &objects);
     // Depth 2: a ray through the glass ball needs both levels to get out (in at depth 1,
     // out at depth 2), so an eye ray traced at depth 1 shows black glass.
     let settings = TraceSettings { max_depth: 2, ..TraceSettings::default() };
     let case = format!("render of three balls (mirror, glass, matte) over a floor, {w} × {h}, max_depth 2");
-    let (image, stats) = render(&world, &camera, w, h, &settings);
+    // The student's camera, render and trace of each pixel's eye ray, as one value (the
+    // camera is theirs: lecture 01's).
+    let (image, stats, eye_colors) = student(|| {
+        with_world(&s, |world, camera| {
+            let (image, stats) = render(world, camera, w, h, &settings);
+            let eye = (0..h).flat_map(|y| (0..w).map(move |x| (x, y)));
+            let colors: Vec<Color> =
+                eye.map(|(x, y)| trace(world, &camera.pixel_ray(x, y, w, h), 0, 1.0, &settings)).collect();
+            (image, stats, colors)
+        })
+    })
+    .map_err(|e| {
+        fail("the camera of the check scene", "a camera", e, "01's PerspectiveCamera::new must accept it")
+    })?;
     ensure(
         image.width == w && image.height == h && image.pixels.len() == (w * h) as usize,
         &case,
@@ -46,30 +49,46 @@ pub(super) fn render_cases(render: RenderFn) -> CheckResult {
         format!("{} × {} ({} pixels)", image.width, image.height, image.pixels.len()),
         "one pixel per (x, y), x < width, y < height",
     )?;
-    let at = |x: u32, y: u32, depth: u32, weight: Float| {
-        trace(&world, &camera.pixel_ray(x, y, w, h), depth, weight, &settings)
-    };
     // Each pixel against its eye ray's colour. The same ray and the same trace give the
     // same colour; 64ε allows a student's render that rounds the ray differently.
     for y in 0..h {
         for x in 0..w {
-            let expected = at(x, y, 0, 1.0);
+            let expected = eye_colors[(y * w + x) as usize];
             let got = image.get(x, y);
             if near(got, expected, COLOR_TOL) {
                 continue;
             }
             let pixel = format!("{case}: pixel ({x}, {y})");
-            let corner =
-                camera.generate_ray(2.0 * x as Float / w as Float - 1.0, 1.0 - 2.0 * y as Float / h as Float);
-            let cause = if near(got, at(x, y, 1, 1.0), COLOR_TOL) {
+            // The colours of the likely mistakes at this pixel (the student's trace and camera).
+            let [deeper, weightless, corner, flipped, transposed] = student(|| {
+                with_world(&s, |world, camera| {
+                    let at = |x: u32, y: u32, depth: u32, weight: Float| {
+                        trace(world, &camera.pixel_ray(x, y, w, h), depth, weight, &settings)
+                    };
+                    let corner = camera.generate_ray(
+                        2.0 * x as Float / w as Float - 1.0,
+                        1.0 - 2.0 * y as Float / h as Float,
+                    );
+                    let transposed = if y < w && x < h { at(y, x, 0, 1.0) } else { Color::NAN };
+                    [
+                        at(x, y, 1, 1.0),
+                        at(x, y, 0, 0.0),
+                        trace(world, &corner, 0, 1.0, &settings),
+                        at(x, h - 1 - y, 0, 1.0),
+                        transposed,
+                    ]
+                })
+            })
+            .unwrap_or([Color::NAN; 5]);
+            let cause = if near(got, deeper, COLOR_TOL) {
                 "the eye ray is the root of the ray tree: trace it at depth 0, not 1"
-            } else if near(got, at(x, y, 0, 0.0), COLOR_TOL) {
+            } else if near(got, weightless, COLOR_TOL) {
                 "the eye ray has weight 1: pass 1.0 to trace"
-            } else if near(got, trace(&world, &corner, 0, 1.0, &settings), COLOR_TOL) {
+            } else if near(got, corner, COLOR_TOL) {
                 "trace the ray through the pixel's centre (x + ½, y + ½): camera.pixel_ray(x, y, w, h)"
-            } else if near(got, at(x, h - 1 - y, 0, 1.0), COLOR_TOL) {
+            } else if near(got, flipped, COLOR_TOL) {
                 "pixel (0, 0) is the top-left: y grows downward, as pixel_ray takes it"
-            } else if y < w && x < h && near(got, at(y, x, 0, 1.0), COLOR_TOL) {
+            } else if near(got, transposed, COLOR_TOL) {
                 "x is the column and y the row: image pixel (x, y) is camera.pixel_ray(x, y, width, height)"
             } else {
                 "each pixel is trace(world, &camera.pixel_ray(x, y, width, height), 0, 1.0, settings)"
@@ -94,6 +113,13 @@ pub(super) fn render_cases(render: RenderFn) -> CheckResult {
         "return the statistics of render_image, which adds up what every pixel counted",
     )?;
     Ok(format!("{} pixels, {primary} primary rays", w * h))
+}
+
+/// `f` of the world of `s` (brute force) and the student's camera of it; the camera's error as text.
+fn with_world<T>(s: &Scene, f: impl FnOnce(&World, &Camera) -> T) -> Result<T, String> {
+    let camera = Camera::from_scene(&s.camera, s.width, s.height).map_err(|e| e.to_string())?;
+    let objects = BruteForce::new(&s.objects);
+    Ok(f(&World::new(s, &objects), &camera))
 }
 
 #[cfg(test)]

@@ -119,11 +119,11 @@ pub(super) fn trace_cases(trace: TraceFn) -> CheckResult {
     let (s, ray) = facing_mirrors(0.0);
     let settings = TraceSettings { min_weight: 0.0, ..TraceSettings::default() };
     let (color, counted) = traced(trace, &s, &ray, &settings);
-    ensure(
-        counted == rays(0, 0, 0) && near(color, Color::splat(0.1), COLOR_TOL),
+    same_tree(
         "facing mirrors with k_r = 0 (black), min_weight 0",
-        format!("{} (± {COLOR_TOL:.1e} each), {}", vec3(Color::splat(0.1)), rays(0, 0, 0)),
-        format!("{}, {counted}", vec3(color)),
+        (color, counted),
+        Color::splat(0.1),
+        rays(0, 0, 0),
         "a child of weight 0 adds nothing: spawn it only when w·max(k) > 0",
     )?;
 
@@ -167,11 +167,11 @@ pub(super) fn trace_cases(trace: TraceFn) -> CheckResult {
     let (s, ray) = block_with_tile(30.0);
     let case = "inside glass (η = 1.5), ray up at 30° to the top face (leaves into the sky)";
     let (color, counted) = traced(trace, &s, &ray, &TraceSettings::default());
-    ensure(
-        counted == rays(0, 1, 0) && near(color, v(1.0, 0.0, 1.0), COLOR_TOL),
+    same_tree(
         case,
-        format!("{} (± {COLOR_TOL:.1e} each), {}", vec3(v(1.0, 0.0, 1.0)), rays(0, 1, 0)),
-        format!("{}, {counted}", vec3(color)),
+        (color, counted),
+        v(1.0, 0.0, 1.0),
+        rays(0, 1, 0),
         "below the critical angle the transmitted ray (07's refract with interface's η) leaves the glass",
     )?;
 
@@ -194,24 +194,84 @@ pub(super) fn trace_cases(trace: TraceFn) -> CheckResult {
     let settings = TraceSettings { max_depth: 1, ..TraceSettings::default() };
     let case = "head-on into glass (η = 1.5) holding a tile, max_depth 1, fresnel off";
     let (color, counted) = traced(trace, &s, &ray, &settings);
-    ensure(
-        counted == rays(0, 1, 0) && near(color, tile, COLOR_TOL),
+    same_tree(
         case,
-        format!("{} (± {COLOR_TOL:.1e} each), {}", vec3(tile), rays(0, 1, 0)),
-        format!("{}, {counted}", vec3(color)),
+        (color, counted),
+        tile,
+        rays(0, 1, 0),
         "without settings.fresnel, R = 0: clear glass spawns one transmitted ray of weight k_t",
     )?;
     let case = "head-on into glass (η = 1.5) holding a tile, max_depth 1, fresnel on";
     let (color, counted) = traced(trace, &s, &ray, &TraceSettings { fresnel: true, ..settings });
     let expected = 0.04 * sky + 0.96 * tile;
-    ensure(
-        counted == rays(1, 1, 0) && near(color, expected, COLOR_TOL),
+    same_tree(
         case,
-        format!("{} (± {COLOR_TOL:.1e} each), {}", vec3(expected), rays(1, 1, 0)),
-        format!("{}, {counted}", vec3(color)),
+        (color, counted),
+        expected,
+        rays(1, 1, 0),
         "with settings.fresnel, R = fresnel_dielectric(−d·N, η_i, η_t): k_r' = k_r + R·k_t, k_t' = (1 − R)·k_t",
     )?;
-    Ok("9 scenes".into())
+    // Through the glass block without its tile, max_depth 1 (found by mutation testing: the
+    // transmitted child at depth instead of depth + 1 passed): the transmitted ray (depth 1)
+    // reaches the back face z = −10 and spawns nothing. Black glass under ambient light adds
+    // 0 at both faces: black, one refracted ray; one more depth would add the sky.
+    let mut clear = s.clone();
+    clear.objects.truncate(1);
+    let case = "head-on through a glass block (η = 1.5), nothing inside, max_depth 1, fresnel off";
+    let (color, counted) = traced(trace, &clear, &ray, &settings);
+    same_tree(
+        case,
+        (color, counted),
+        Color::ZERO,
+        rays(0, 1, 0),
+        "every child, transmitted ones too, is traced at depth + 1: the ray of depth max_depth spawns nothing",
+    )?;
+
+    // The same with tinted glass, k_t = ½ (found by mutation testing: k_r + R/k_t passed where
+    // k_t = 1): k_r' = 0.04·½ = 0.02 on the sky, k_t' = 0.96·½ = 0.48 on the tile.
+    let mut tinted = s.clone();
+    tinted.materials[0].transparent = Color::splat(0.5);
+    let case = "head-on into tinted glass (η = 1.5, k_t = ½) holding a tile, max_depth 1, fresnel on";
+    let (color, counted) = traced(trace, &tinted, &ray, &TraceSettings { fresnel: true, ..settings });
+    let expected = 0.02 * sky + 0.48 * tile;
+    same_tree(
+        case,
+        (color, counted),
+        expected,
+        rays(1, 1, 0),
+        "R moves R·k_t into the mirror ray: k_r' = k_r + R·k_t, k_t' = (1 − R)·k_t",
+    )?;
+
+    // A shiny sphere head-on, lit along the view, with and without shadow rays (found by
+    // mutation testing: V = d instead of −d passed without them): N = L = V = +z at the hit,
+    // so H = N and the highlight is k_s·1⁸; I = k_d⊙(0.1 + 1) + k_s.
+    let shiny = raylab::scene::Material {
+        diffuse: v(0.6, 0.4, 0.2),
+        specular: Color::splat(0.5),
+        exponent: 8.0,
+        ..matte(Color::ONE)
+    };
+    let s = scene(
+        vec![sphere(v(0.0, 0.0, -5.0), 1.0, 0)],
+        vec![shiny],
+        vec![directional(Vec3::Z, Color::ONE)],
+        Color::ZERO,
+        Color::splat(0.1),
+    );
+    let expected = v(0.6, 0.4, 0.2) * 1.1 + Color::splat(0.5);
+    for shadows in [false, true] {
+        let case = format!("a shiny sphere (k_s = ½, n = 8) head-on, lit along the view, shadows {shadows}");
+        let settings = TraceSettings { shadows, ..TraceSettings::default() };
+        let (color, _) = traced(trace, &s, &Ray::new(Vec3::ZERO, -Vec3::Z), &settings);
+        ensure(
+            near(color, expected, COLOR_TOL),
+            &case,
+            format!("{} (± {COLOR_TOL:.1e} each)", vec3(expected)),
+            vec3(color),
+            "the local shading's view vector V points back toward the eye: −d, with shadows or without",
+        )?;
+    }
+    Ok("12 scenes".into())
 }
 
 /// A clear glass ball (η = 1.5) of radius 10⁻⁵ one unit in front of the eye, a matte wall
@@ -257,11 +317,11 @@ pub(super) fn tiny_glass_sphere(trace: TraceFn) -> CheckResult {
                      10⁻⁵)",
                 ));
             }
-            ensure(
-                counted == rays(0, 2, 0) && near(color, expected, COLOR_TOL),
-                case,
-                format!("{} (± {COLOR_TOL:.1e} each), {}", vec3(expected), rays(0, 2, 0)),
-                format!("{}, {counted}", vec3(color)),
+            same_tree(
+                &case,
+                (color, counted),
+                expected,
+                rays(0, 2, 0),
                 "after the exit the ray meets the wall: the ray inside must leave the ball where it \
                  exits, not bounce inside it",
             )?;
@@ -315,9 +375,10 @@ mod tests {
             return world.scene.background;
         };
         let scene = world.scene;
-        let material = &scene.materials[hit.material];
+        let material = world.material_at(&hit, &scene.materials[hit.material]);
+        let material = material.as_ref();
         let dir = ray.dir.normalize();
-        let diffuse = world.diffuse(&hit, material);
+        let diffuse = material.diffuse;
         let mut color = if settings.shadows {
             let surface = Surface { material, diffuse, hit, v: -dir, origin: ray.origin };
             let shadows = ShadowSettings { mode: settings.shadow_mode, area_samples: settings.area_samples };

@@ -5,6 +5,7 @@
 
 use super::common::*;
 use crate::check::{ray, show_span};
+use raylab_testing::exact::{Ratio, exact_span};
 
 pub(super) fn union_cases(union: UnionFn) -> CheckResult {
     // Componentwise min of the mins and max of the maxes; every value exact.
@@ -288,7 +289,113 @@ pub(super) fn slab_boundaries(hit: SlabFn) -> CheckResult {
         let case = format!("cube [−1, 1]³, ray from {} along {}", vec3(o), vec3(d));
         expect_span(hit, &cube(), &r, all, expected, &case, "a ray along a face is inside that slab")?;
     }
-    Ok("411 rays on slab boundaries, none NaN".into())
+    // The range is open: a span that touches it only at an end is no hit. The box's own span
+    // first, over (0, ∞), then the ranges that end where it starts and start where it ends.
+    let r = ray([-3.0, 0.25, 0.5], [1.0, 0.125, -0.0625]);
+    let case = format!("cube [−1, 1]³, ray from {} along {}", vec3(r.origin), vec3(r.dir));
+    let Some((t0, t1)) = hit(&cube(), &r, r.dir.recip(), all) else {
+        return Err(fail(
+            case,
+            "a hit, about (2, 4)",
+            "None",
+            "the ray crosses the cube from x = −1 to x = 1",
+        ));
+    };
+    for (range, end) in [
+        (Interval::new(0.0, t0), "ends at the span's entry"),
+        (Interval::new(t1, 100.0), "starts at its exit"),
+    ] {
+        let case = format!("{case}, range ({}, {}): {end}", num(range.min), num(range.max));
+        let got = hit(&cube(), &r, r.dir.recip(), range);
+        ensure(
+            got.is_none(),
+            case,
+            "None",
+            show_span(&got),
+            "the range is open, min < t < max: test t_enter < range.max and t_exit > range.min",
+        )?;
+    }
+    // Random rays on a 1/16 grid (exact in any float), half aimed exactly at a face, an edge or a
+    // corner, half of them in a range that reaches back, against exact arithmetic: no false miss,
+    // and both ends of the span conservative (the entry not above the exact one, the exit not
+    // below, beyond the rounding of the exact fraction to f64) and within SPAN_TOL of them.
+    let cast = |v: [i64; 3]| Vec3::new(v[0] as Float, v[1] as Float, v[2] as Float) / 16.0;
+    let mut rng = Rng::new(0x09e);
+    let mut spans = 0;
+    for n in 0..2000 {
+        let lo: [i64; 3] = std::array::from_fn(|_| rng.int(-40, 40));
+        let hi: [i64; 3] = std::array::from_fn(|i| lo[i] + rng.int(0, 40));
+        let o: [i64; 3] = std::array::from_fn(|_| rng.int(-100, 100));
+        let d: [i64; 3] = if n % 2 == 0 {
+            std::array::from_fn(|_| if rng.int(0, 3) == 0 { 0 } else { rng.int(-60, 60) })
+        } else {
+            std::array::from_fn(|i| [lo[i], hi[i]][rng.int(0, 1) as usize] - o[i])
+        };
+        if d == [0; 3] {
+            continue;
+        }
+        let (range, min, max) = if n % 4 < 2 {
+            (all, Ratio::from(0), None)
+        } else {
+            let (a, b) = (rng.int(0, 40), rng.int(1, 40));
+            (Interval::new(-(a as Float) / 4.0, b as Float / 4.0), Ratio::new(-a, 4), Some(Ratio::new(b, 4)))
+        };
+        let r = Ray::new(cast(o), cast(d));
+        let b = Aabb::new(cast(lo), cast(hi));
+        let got = hit(&b, &r, r.dir.recip(), range);
+        let case = format!(
+            "box {}..{}, ray from {} along {}, range ({}, {})",
+            vec3(b.min),
+            vec3(b.max),
+            vec3(r.origin),
+            vec3(r.dir),
+            num(range.min),
+            num(range.max)
+        );
+        let Some((enter, exit)) = exact_span(o, d, lo, hi) else { continue };
+        let hits = enter <= exit && max.is_none_or(|m| enter < m) && exit > min;
+        let Some((t0, t1)) = got else {
+            if hits {
+                return Err(fail(
+                    case,
+                    "a hit (exact arithmetic)",
+                    "None",
+                    "widen t_enter down and t_exit up by 2γ₃",
+                ));
+            }
+            continue;
+        };
+        if !hits {
+            // A box the ray passes by within the widening may be hit: conservative.
+            continue;
+        }
+        spans += 1;
+        let (want0, want1) = (enter.max(min).to_f64(), max.map_or(exit, |m| exit.min(m)).to_f64());
+        let (t0, t1) = (t0 as f64, t1 as f64);
+        let slack = |x: f64| f64::EPSILON * x.abs();
+        let near = |t: f64, want: f64, of: Ratio| {
+            (t - want).abs() <= SPAN_TOL as f64 * of.to_f64().abs() + slack(want)
+        };
+        let cause = if t0 > want0 + slack(want0) {
+            "the entry rounded above the exact one: lower t_enter by 2γ₃, t·(1 − 2γ₃) for t ≥ 0, t·(1 + 2γ₃) below 0"
+        } else if t1 < want1 - slack(want1) {
+            "the exit rounded below the exact one: raise t_exit by 2γ₃, t·(1 + 2γ₃) for t ≥ 0, t·(1 − 2γ₃) below 0"
+        } else if !near(t0, want0, enter) || !near(t1, want1, exit) {
+            "each end within 2γ₃ and a rounding of the exact one: the latest entry and the earliest exit, widened once"
+        } else {
+            continue;
+        };
+        return Err(fail(
+            case,
+            format!("({want0:.9}, {want1:.9}) (exact arithmetic), the entry not above, the exit not below"),
+            format!("({t0:.9}, {t1:.9})"),
+            cause,
+        ));
+    }
+    Ok(format!(
+        "411 rays on slab boundaries, none NaN; the open range's ends; 2000 random rays, {spans} spans \
+         conservative against exact arithmetic"
+    ))
 }
 
 #[cfg(test)]

@@ -6,14 +6,72 @@
 pub(super) use std::sync::Arc;
 
 pub(super) use l04_quadrics_transforms::BruteForce;
-pub(super) use l09_acceleration::{
-    Aabb, BINS, Bin, Bvh, TRAVERSAL_COST, sah_split, sphere_bounds, transform_bounds, triangle_bounds,
-};
+pub(super) use l09_acceleration::{Aabb, BINS, Bin, Bvh, TRAVERSAL_COST};
 pub(super) use raylab::random::Rng;
 pub(super) use raylab::scene::{Mesh, Object, Shape};
 pub(super) use raylab::{Float, Hit, Intersector, Interval, Mat4, Ray, Vec3};
 
 pub(super) use crate::check::{CheckResult, Failure, close, ensure, fail, maybe, num, v, vec3};
+
+pub(super) use crate::judge::student;
+
+// The student's functions, each value taken through `judge::student` (the lecture is `judged`);
+// a box crosses as its two corners.
+crate::judge::student_fns! { l09_acceleration:
+    fn sah_split(bins: &[Bin; BINS]) -> Option<(usize, Float)>;
+}
+
+/// A box of the student's code, through `judge::student` as its corners.
+#[track_caller]
+fn boxed(f: impl FnOnce() -> Aabb) -> Aabb {
+    let (min, max) = student(|| {
+        let b = f();
+        (b.min, b.max)
+    });
+    Aabb::new(min, max)
+}
+
+/// `Aabb::union`, through `judge::student`.
+#[track_caller]
+pub(super) fn aabb_union(a: Aabb, b: Aabb) -> Aabb {
+    boxed(|| a.union(b))
+}
+
+/// `Aabb::union_point`, through `judge::student`.
+#[track_caller]
+pub(super) fn aabb_union_point(a: Aabb, p: Vec3) -> Aabb {
+    boxed(|| a.union_point(p))
+}
+
+/// `Aabb::surface_area`, through `judge::student`.
+#[track_caller]
+pub(super) fn aabb_surface_area(b: &Aabb) -> Float {
+    student(|| b.surface_area())
+}
+
+/// `Aabb::hit`, through `judge::student`.
+#[track_caller]
+pub(super) fn aabb_hit(b: &Aabb, ray: &Ray, inv_dir: Vec3, range: Interval) -> Option<(Float, Float)> {
+    student(|| b.hit(ray, inv_dir, range))
+}
+
+/// `l09_acceleration::sphere_bounds`, through `judge::student`.
+#[track_caller]
+pub(super) fn sphere_bounds(center: Vec3, radius: Float) -> Aabb {
+    boxed(|| l09_acceleration::sphere_bounds(center, radius))
+}
+
+/// `l09_acceleration::triangle_bounds`, through `judge::student`.
+#[track_caller]
+pub(super) fn triangle_bounds(vertices: &[Vec3; 3]) -> Aabb {
+    boxed(|| l09_acceleration::triangle_bounds(vertices))
+}
+
+/// `l09_acceleration::transform_bounds`, through `judge::student`.
+#[track_caller]
+pub(super) fn transform_bounds(local: &Aabb, world_from_object: &Mat4) -> Aabb {
+    boxed(|| l09_acceleration::transform_bounds(local, world_from_object))
+}
 
 pub(super) type UnionFn = fn(Aabb, Aabb) -> Aabb;
 pub(super) type UnionPointFn = fn(Aabb, Vec3) -> Aabb;

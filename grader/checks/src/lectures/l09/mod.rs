@@ -22,21 +22,22 @@ const BVH_NEEDS: &[&str] = &[
 ];
 
 declare_checks! {
-    "l09";
+    "l09", judged;
     Meta::unit("Aabb::union", "unions by hand, in both orders, and the empty box as the identity")
-        => union_cases(Aabb::union),
+        => union_cases(aabb_union),
     Meta::unit("Aabb::union_point", "a point outside, inside, and added to the empty box")
-        => union_point_cases(Aabb::union_point),
+        => union_point_cases(aabb_union_point),
     Meta::unit("Aabb::surface_area", "2(dₓd_y + d_yd_z + d_zdₓ) by hand; flat, segment, point, empty and infinite boxes")
-        => area_cases(Aabb::surface_area),
+        => area_cases(aabb_surface_area),
     Meta::unit("Aabb::hit", "slab spans by hand: through, beside, behind, beyond the range, from inside, reversed")
-        => slab_cases(Aabb::hit),
+        => slab_cases(aabb_hit),
     Meta::extreme(
         "Aabb::hit",
         "slab-boundaries",
         "axis-parallel rays with ±0 components starting on a slab plane, flat boxes across and along: no \
-         false miss, never NaN",
-    ) => slab_boundaries(Aabb::hit),
+         false miss, never NaN; the range open at both ends; random spans conservative against exact \
+         arithmetic",
+    ) => slab_boundaries(aabb_hit),
     Meta::unit("sphere_bounds", "c ± r on every axis, holding the exact sphere (outward rounding)")
         => sphere_cases(sphere_bounds),
     Meta::unit("triangle_bounds", "the min and max of the three corners, flat in an axis plane")

@@ -67,18 +67,31 @@ pub(super) fn describe(r: &Ray, range: Interval) -> String {
     )
 }
 
-/// The BVH's closest hit against brute force's: the same object at the same t.
-pub(super) fn same_closest(
+/// Brute force's and the BVH's closest hits of each ray over `objects`, as the student's code
+/// finds them (the BVH is this lecture's, brute force lectures 02–04's, each checked by its own
+/// checks): one value through `judge::student`.
+pub(super) fn closest_pairs(
     closest: ClosestFn,
-    bvh: &Bvh,
-    brute: &BruteForce,
+    objects: &[Object],
+    rays: &[(Ray, Interval)],
+) -> Vec<(Option<Hit>, Option<Hit>)> {
+    student(|| {
+        let (bvh, brute) = (Bvh::build(objects), BruteForce::new(objects));
+        rays.iter().map(|(r, range)| (brute.closest_hit(r, *range), closest(&bvh, r, *range))).collect()
+    })
+}
+
+/// The BVH's closest hit `got` against brute force's `expected` over `objects`: the same object at the
+/// same t; whether it is a hit.
+pub(super) fn same_closest(
+    objects: &[Object],
+    (expected, got): (Option<Hit>, Option<Hit>),
     r: &Ray,
     range: Interval,
     scene: &str,
 ) -> Result<bool, Failure> {
-    let expected = brute.closest_hit(r, range);
-    let got = closest(bvh, r, range);
     let case = format!("{scene}: {}", describe(r, range));
+    let is_plane = |e: &Hit| matches!(objects.get(e.object).map(|o| &o.shape), Some(Shape::Plane { .. }));
     match (expected, got) {
         (Some(e), Some(g)) if e.object == g.object && e.t == g.t => Ok(true),
         (None, None) => Ok(false),
@@ -90,8 +103,7 @@ pub(super) fn same_closest(
              primitive's key)",
         )),
         (Some(e), Some(g)) if g.t > e.t => {
-            let plane = matches!(bvh.objects[e.object].shape, Shape::Plane { .. });
-            let cause = if plane {
+            let cause = if is_plane(&e) {
                 "test bvh.unbounded (planes) on every ray too: they are not in the tree"
             } else {
                 "keep searching after a hit: push the farther children met on the stack and visit each \
@@ -100,8 +112,7 @@ pub(super) fn same_closest(
             Err(fail(case, show_hit(&expected), show_hit(&got), cause))
         }
         (Some(e), None) => {
-            let plane = matches!(bvh.objects[e.object].shape, Shape::Plane { .. });
-            let cause = if plane {
+            let cause = if is_plane(&e) {
                 "test bvh.unbounded (planes) on every ray too: they are not in the tree"
             } else {
                 "every child whose box the ray meets must be visited: push the farther children met on the \
@@ -113,7 +124,7 @@ pub(super) fn same_closest(
             case,
             show_hit(&expected),
             show_hit(&got),
-            "only hits inside range (min < t < max): pass the shrinking range to every box and primitive test",
+            "only hits inside range (min < t < max): pass the range to every box and primitive test",
         )),
     }
 }
@@ -123,9 +134,8 @@ pub(super) fn closest_cases(closest: ClosestFn) -> CheckResult {
     // from the origin sphere k spans t ∈ [2k − 0.5, 2k + 0.5]: the nearest, k = 1, at t = 1.5;
     // starting the range at 10 (inside sphere k = 5): its far side at 10.5; ending at 1: nothing.
     let row: Vec<Object> = (1..=50).rev().map(|k| sphere(v(0.0, 0.0, -2.0 * k as Float), 0.5, 0)).collect();
-    let bvh = Bvh::build(&row);
     let r = Ray::new(Vec3::ZERO, -Vec3::Z);
-    for (range, expected, cause) in [
+    let cases = [
         (
             Interval::POSITIVE,
             Some((49, 1.5)),
@@ -138,9 +148,11 @@ pub(super) fn closest_cases(closest: ClosestFn) -> CheckResult {
             "only hits with range.min < t: pass the range to the primitive tests",
         ),
         (Interval::new(0.0, 1.0), None, "only hits with t < range.max"),
-    ] {
+    ];
+    let row_rays: Vec<(Ray, Interval)> = cases.iter().map(|&(range, ..)| (r, range)).collect();
+    for ((range, expected, cause), (_, got)) in cases.into_iter().zip(closest_pairs(closest, &row, &row_rays))
+    {
         let case = format!("50 spheres r = 0.5 at z = −2k listed far first: {}", describe(&r, range));
-        let got = closest(&bvh, &r, range);
         let ok = match (got, expected) {
             (Some(h), Some((object, t))) => h.object == object && h.t == t,
             (None, None) => true,
@@ -151,18 +163,10 @@ pub(super) fn closest_cases(closest: ClosestFn) -> CheckResult {
     }
     // The mixed scene: 3000 random rays, each the brute-force answer.
     let objects = mixed_scene();
-    let (bvh, brute) = (Bvh::build(&objects), BruteForce::new(&objects));
-    let mut hits = 0;
     let rays = random_rays(&objects, 3000, 0x0c1);
-    for (r, range) in &rays {
-        hits += usize::from(same_closest(
-            closest,
-            &bvh,
-            &brute,
-            r,
-            *range,
-            "60 spheres, a floor and an icosphere",
-        )?);
+    let mut hits = 0;
+    for ((r, range), pair) in rays.iter().zip(closest_pairs(closest, &objects, &rays)) {
+        hits += usize::from(same_closest(&objects, pair, r, *range, "60 spheres, a floor and an icosphere")?);
     }
     Ok(format!("3 row rays; {hits} of {} random rays hit, all as brute force", rays.len()))
 }
@@ -174,7 +178,6 @@ pub(super) fn shared_edges(closest: ClosestFn) -> CheckResult {
     // edge, and pick brute force's triangle where two tie.
     let mesh = Arc::new(Mesh::icosphere(2));
     let objects = [Object { shape: Shape::Mesh(mesh.clone()), material: 0, transform: None }];
-    let (bvh, brute) = (Bvh::build(&objects), BruteForce::new(&objects));
     let mut targets = mesh.positions.clone();
     for tri in &mesh.triangles {
         for k in 0..3 {
@@ -185,44 +188,55 @@ pub(super) fn shared_edges(closest: ClosestFn) -> CheckResult {
             }
         }
     }
-    let mut total = 0;
-    for origin in [Vec3::ZERO, v(0.1, -0.2, 0.05)] {
-        for &p in &targets {
-            let r = Ray::new(origin, p - origin);
-            let hit = same_closest(
-                closest,
-                &bvh,
-                &brute,
-                &r,
-                Interval::POSITIVE,
-                "from inside an icosphere (320 triangles)",
-            )?;
-            ensure(
-                hit,
-                format!("from inside an icosphere: {}", describe(&r, Interval::POSITIVE)),
-                "a hit",
-                "None (a leak)",
-                "a ray through an edge of a closed mesh must hit: widen the box test's ends (Aabb::hit) so no \
-                 node on the edge is culled",
-            )?;
-            total += 1;
-        }
+    let rays: Vec<(Ray, Interval)> = [Vec3::ZERO, v(0.1, -0.2, 0.05)]
+        .into_iter()
+        .flat_map(|origin| targets.iter().map(move |&p| (Ray::new(origin, p - origin), Interval::POSITIVE)))
+        .collect();
+    for ((r, range), pair) in rays.iter().zip(closest_pairs(closest, &objects, &rays)) {
+        let hit = same_closest(&objects, pair, r, *range, "from inside an icosphere (320 triangles)")?;
+        ensure(
+            hit,
+            format!("from inside an icosphere: {}", describe(r, *range)),
+            "a hit",
+            "None (a leak)",
+            "a ray through an edge of a closed mesh must hit: widen the box test's ends (Aabb::hit) so no \
+             node on the edge is culled",
+        )?;
     }
-    Ok(format!("{total} edge and vertex rays, no leak"))
+    Ok(format!("{} edge and vertex rays, no leak", rays.len()))
+}
+
+/// What `any_cases` asks of the student's code, as one value: the row's answers, the floor ray's
+/// (brute force's closest hit and the BVH's any hit) and each random ray's.
+#[derive(serde::Serialize, serde::Deserialize)]
+struct AnyAnswers {
+    row: Vec<bool>,
+    down: (Option<Hit>, bool),
+    random: Vec<(Option<Hit>, bool)>,
 }
 
 pub(super) fn any_cases(any: AnyFn) -> CheckResult {
     let objects = mixed_scene();
-    let (bvh, brute) = (Bvh::build(&objects), BruteForce::new(&objects));
     // A blocker beyond the range does not count: down −z through a row of spheres starting at
     // t = 1.5, a range ending at 1 sees nothing.
     let row: Vec<Object> = (1..=50).map(|k| sphere(v(0.0, 0.0, -2.0 * k as Float), 0.5, 0)).collect();
-    let row_bvh = Bvh::build(&row);
     let r = Ray::new(Vec3::ZERO, -Vec3::Z);
-    for (range, expected) in
-        [(Interval::POSITIVE, true), (Interval::new(0.0, 1.0), false), (Interval::new(0.0, 1.6), true)]
-    {
-        let got = any(&row_bvh, &r, range);
+    let row_cases =
+        [(Interval::POSITIVE, true), (Interval::new(0.0, 1.0), false), (Interval::new(0.0, 1.6), true)];
+    // Straight down onto the floor (unbounded, object 17) from (7.9, −6.5, 7.9), past every
+    // sphere (they lie within [−6.9, 6.9]³): the floor y = −7 at t = 0.5.
+    let down = Ray::new(v(7.9, -6.5, 7.9), -Vec3::Y);
+    let rays = random_rays(&objects, 3000, 0x0a1);
+    let answers = student(|| {
+        let row_bvh = Bvh::build(&row);
+        let row = row_cases.iter().map(|&(range, _)| any(&row_bvh, &r, range)).collect();
+        let (bvh, brute) = (Bvh::build(&objects), BruteForce::new(&objects));
+        let down = (brute.closest_hit(&down, Interval::POSITIVE), any(&bvh, &down, Interval::POSITIVE));
+        let random =
+            rays.iter().map(|(r, range)| (brute.closest_hit(r, *range), any(&bvh, r, *range))).collect();
+        AnyAnswers { row, down, random }
+    });
+    for (&(range, expected), &got) in row_cases.iter().zip(&answers.row) {
         ensure(
             got == expected,
             format!("50 spheres r = 0.5 at z = −2k (first at t = 1.5): {}", describe(&r, range)),
@@ -231,11 +245,9 @@ pub(super) fn any_cases(any: AnyFn) -> CheckResult {
             "a blocker counts only inside the range: the shadow ray ends at the light (range.max)",
         )?;
     }
-    // Straight down onto the floor (unbounded, object 17) from (7.9, −6.5, 7.9), past every
-    // sphere (they lie within [−6.9, 6.9]³): the floor y = −7 at t = 0.5.
-    let down = Ray::new(v(7.9, -6.5, 7.9), -Vec3::Y);
-    if brute.closest_hit(&down, Interval::POSITIVE).is_some_and(|h| h.object == 17) {
-        let got = any(&bvh, &down, Interval::POSITIVE);
+    if let (Some(h), got) = answers.down
+        && h.object == 17
+    {
         ensure(
             got,
             format!("the floor y = −7 below {}", describe(&down, Interval::POSITIVE)),
@@ -244,13 +256,10 @@ pub(super) fn any_cases(any: AnyFn) -> CheckResult {
             "test bvh.unbounded (planes) too: they are not in the tree",
         )?;
     }
-    let rays = random_rays(&objects, 3000, 0x0a1);
     let mut blocked = 0;
-    for (r, range) in &rays {
-        let expected = brute.closest_hit(r, *range);
-        let got = any(&bvh, r, *range);
+    for ((r, range), (expected, got)) in rays.iter().zip(answers.random) {
         let cause = match &expected {
-            Some(h) if matches!(bvh.objects[h.object].shape, Shape::Plane { .. }) => {
+            Some(h) if matches!(objects.get(h.object).map(|o| &o.shape), Some(Shape::Plane { .. })) => {
                 "test bvh.unbounded (planes) too: they are not in the tree"
             }
             Some(_) => "visit every child whose box the ray meets until a blocker is found",

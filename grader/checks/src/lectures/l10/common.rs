@@ -25,6 +25,10 @@ crate::judge::student_fns! { l10_textures_sampling:
     fn checker_3d(p: Vec3, scale: Float, a: Color, b: Color) -> Color;
     fn bilinear(image: &Image, uv: Vec2) -> Color;
     fn filter_weight(filter: Filter, offset: Vec2) -> Float;
+    fn noise(p: Vec3) -> Float;
+    fn fractal_noise(p: Vec3, octaves: u32) -> Float;
+    fn marble(p: Vec3, octaves: u32, frequency: Float, amplitude: Float) -> Float;
+    fn wood(p: Vec3, octaves: u32, frequency: Float, amplitude: Float) -> Float;
 }
 
 /// `l10_textures_sampling::sample_offsets`, through `judge::student`: the offsets and the
@@ -46,6 +50,9 @@ pub(super) type CheckerFn = fn(Vec2, Float, Color, Color) -> Color;
 pub(super) type Checker3dFn = fn(Vec3, Float, Color, Color) -> Color;
 pub(super) type BilinearFn = fn(&Image, Vec2) -> Color;
 pub(super) type FilterFn = fn(Filter, Vec2) -> Float;
+pub(super) type NoiseFn = fn(Vec3) -> Float;
+pub(super) type FractalFn = fn(Vec3, u32) -> Float;
+pub(super) type VeinFn = fn(Vec3, u32, Float, Float) -> Float;
 pub(super) type SamplesFn = fn(Pattern, u32, &mut Rng) -> Vec<Vec2>;
 pub(super) type SupersampleFn =
     fn(&World, &Camera, u32, u32, &TraceSettings, u32, Pattern, Filter, u64) -> (Image, RayStats);
@@ -64,8 +71,10 @@ pub(super) fn show2(p: Vec2) -> String {
     format!("({}, {})", num(p.x), num(p.y))
 }
 
+/// Never with a NaN in either (see `check::near3`).
 pub(super) fn near2(a: Vec2, b: Vec2, tolerance: Float) -> bool {
-    (a - b).abs().max_element() <= tolerance
+    let d = (a - b).abs();
+    !d.is_nan() && d.max_element() <= tolerance
 }
 
 pub(super) fn same_uv(

@@ -1,5 +1,5 @@
 //! Lecture 10, textures and sampling: texture coordinates of spheres, planes and triangles,
-//! checkerboards, bilinear image lookup, sampling patterns, filters and supersampling.
+//! checkerboards, noise, marble and wood, bilinear image lookup, sampling patterns, filters and supersampling.
 
 use crate::check::Meta;
 
@@ -19,6 +19,17 @@ declare_checks! {
     ) => checker_cases(checker),
     Meta::unit("checker_3d", "a solid board alternating across each face of a cube, at two scales")
         => checker_3d_cases(checker_3d),
+    Meta::unit(
+        "noise",
+        "0 at lattice points, continuous across 300 cell faces, within its bound 1.0364, and Perlin's own \
+         formulation at 2,007 points, negative cells and 10³⁰ included",
+    ) => noise_cases(noise),
+    Meta::unit("fractal_noise", "0 octaves is 0; 1, 2, 5 and 8 octaves against the sum, at 500 points")
+        .needs(&["10/noise"]) => fractal_cases(fractal_noise),
+    Meta::unit("marble", "(1 + sin(f·x + A·N))/2 at 600 points, with and without noise")
+        .needs(&["10/fractal_noise"]) => marble_cases(marble),
+    Meta::unit("wood", "(1 + sin(f·√(x² + z²) + A·N))/2 at 600 points, with and without noise")
+        .needs(&["10/fractal_noise"]) => wood_cases(wood),
     Meta::unit(
         "bilinear",
         "pixel centres, halfway means, wrapping edges and tiles, v upward, on a 4 × 2 image",
@@ -56,6 +67,8 @@ mod common;
 #[cfg(feature = "l10")]
 mod filter;
 #[cfg(feature = "l10")]
+mod noise;
+#[cfg(feature = "l10")]
 mod patterns;
 #[cfg(feature = "l10")]
 mod supersample;
@@ -66,7 +79,7 @@ mod uv;
 #[cfg(feature = "l10")]
 mod code {
     pub(super) use super::{
-        bilinear::*, checker::*, common::*, filter::*, patterns::*, supersample::*, uv::*,
+        bilinear::*, checker::*, common::*, filter::*, noise::*, patterns::*, supersample::*, uv::*,
     };
 }
 

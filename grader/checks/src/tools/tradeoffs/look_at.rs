@@ -122,7 +122,8 @@ pub fn orthonormality_error(m: &Mat4, eye: Vec3, at: Vec3) -> f64 {
     ];
     errors.extend((0..3).map(|k| (uv[k] - w[k]).abs()));
     errors.extend((0..3).map(|k| (w[k] - w_true[k]).abs()));
-    errors.into_iter().fold(0.0, |m: f64, e| if e.is_nan() { f64::NAN } else { m.max(e) })
+    // A NaN anywhere stays (f64::max would drop it at the next number).
+    errors.into_iter().fold(0.0, |m: f64, e| if m.is_nan() || e.is_nan() { f64::NAN } else { m.max(e) })
 }
 
 /// What a variant did on a set of cameras: (refused, NaN bases, max orthonormality error of

@@ -4,12 +4,11 @@
 
 use l01_transforms::Camera;
 use l04_quadrics_transforms::BruteForce;
-use l08_ray_tree::{TraceSettings, World};
+use l08_ray_tree::{SurfaceMaterial, TraceSettings, World};
 use l09_acceleration::Bvh;
-use l10_textures_sampling::{Filter, Pattern, surface_color};
-use raylab::scene::Material;
+use l10_textures_sampling::{Filter, Pattern, surface_material};
 use raylab::stats::{Counter, RayStats};
-use raylab::{Float, Hit, Image, Intersector, Scene};
+use raylab::{Float, Image, Intersector, Scene};
 
 use super::row::{Pair, Row, own_precision};
 use super::timing::{Effort, Timing, time_per_item};
@@ -149,8 +148,8 @@ pub fn measure_tree(effort: &Effort) -> Result<Vec<Row>, String> {
 /// `scene` traced once per pixel centre through `objects`, with its own settings.
 fn render_through(scene: &Scene, objects: &dyn Intersector) -> Result<(Image, RayStats), String> {
     let camera = Camera::from_scene(&scene.camera, scene.width, scene.height).map_err(|e| e.to_string())?;
-    let surface = |hit: &Hit, material: &Material| surface_color(scene, hit, material);
-    let world = World::new(scene, objects).with_surface(&surface);
+    let surface: SurfaceMaterial = &|hit, material| surface_material(scene, hit, material);
+    let world = World::new(scene, objects).with_surface(surface);
     Ok(l08_ray_tree::render(&world, &camera, scene.width, scene.height, &scene_settings(scene)))
 }
 

@@ -1,0 +1,485 @@
+//! The ray tree of a pixel in 3D over its scene, as one offline HTML page: the grader
+//! tessellates the scene into triangles and walks the tree into segments (nothing is traced in
+//! the browser), and `assets/view3d.js`, a small hand-written WebGL module, draws them with an
+//! orbiting camera. `grader render SCENE --tree X,Y --view FILE` writes one.
+
+// `Float` is f32, or f64 with the kit's `f64` feature: the page's numbers are f32 either way, and
+// the angles are worked in f64.
+#![allow(clippy::unnecessary_cast)]
+
+use std::f64::consts::PI;
+use std::fmt::Write as _;
+
+use l08_ray_tree::{RayKind, RayTree};
+use raylab::scene::{Camera, LightKind, Shape};
+use raylab::{Color, Float, Mat4, Scene, Vec3};
+use serde::Serialize;
+
+/// The drawing code, put into each page whole.
+const SCRIPT: &str = include_str!("../assets/view3d.js");
+
+/// Slices around a sphere's axis and rings from pole to pole; sides of a cylinder or a cone.
+const SLICES: usize = 32;
+const RINGS: usize = 16;
+
+/// What the page draws.
+#[derive(Serialize)]
+pub struct View {
+    title: String,
+    camera: ViewCamera,
+    /// Half the diagonal of the scene's bounds (planes aside): the length of a ray that escapes.
+    radius: f32,
+    objects: Vec<ViewObject>,
+    /// The lights as line segments (x₀ y₀ z₀ x₁ y₁ z₁): a cross at a point, a rect's outline.
+    lights: Vec<[f32; 6]>,
+    trees: Vec<ViewTree>,
+}
+
+#[derive(Serialize)]
+struct ViewCamera {
+    eye: [f32; 3],
+    at: [f32; 3],
+    up: [f32; 3],
+    /// The vertical field of view in radians (an orthographic camera is shown in perspective).
+    fovy: f32,
+}
+
+#[derive(Serialize)]
+struct ViewObject {
+    /// `#N`, as the text tree names it.
+    name: String,
+    color: [f32; 3],
+    /// 1 for an opaque object; a transparent one lets the rays inside it be seen.
+    opacity: f32,
+    /// Nine numbers a triangle, in world space.
+    triangles: Vec<f32>,
+}
+
+/// One pixel's tree: its rays as segments, and its text (as `grader render --tree` prints it).
+#[derive(Serialize)]
+pub struct ViewTree {
+    label: String,
+    pixel: [u32; 2],
+    text: String,
+    segments: Vec<Segment>,
+}
+
+#[derive(Serialize)]
+struct Segment {
+    kind: &'static str,
+    from: [f32; 3],
+    to: [f32; 3],
+    weight: f32,
+    /// The object the ray hit (for a shadow ray: its blocker), or `null`.
+    hit: Option<usize>,
+}
+
+impl View {
+    /// The scene's geometry and lights, with no tree yet.
+    pub fn new(scene: &Scene, title: &str) -> Self {
+        let solids: Vec<Vec<[Vec3; 3]>> = scene.objects.iter().map(|o| world_triangles(o, None)).collect();
+        let (center, radius) = bounds(scene, &solids);
+        // The surfaces to 10⁻⁴ of the scene's size, a pixel's worth of the view (five digits, not
+        // eight: the page's weight is its triangles).
+        let step = 10f64.powf((radius as f64).log10().floor() - 4.0);
+        let objects = scene
+            .objects
+            .iter()
+            .zip(solids)
+            .enumerate()
+            .map(|(index, (object, solid))| {
+                let triangles = if matches!(object.shape, Shape::Plane { .. }) {
+                    world_triangles(object, Some((center, radius)))
+                } else {
+                    solid
+                };
+                let material = scene.materials.get(object.material);
+                let diffuse = material.map_or(Color::splat(0.7), |m| m.diffuse);
+                let transparent =
+                    material.map_or(0.0, |m| m.transparent.clamp(Color::ZERO, Color::ONE).max_element());
+                ViewObject {
+                    name: format!("#{index}"),
+                    color: shown_color(diffuse),
+                    opacity: (1.0 - 0.75 * transparent) as f32,
+                    triangles: triangles
+                        .iter()
+                        .flatten()
+                        .flat_map(|p| p.to_array())
+                        .map(|x| quantized(x, step))
+                        .collect(),
+                }
+            })
+            .collect();
+        let (eye, at, up, fovy) = match scene.camera {
+            Camera::Perspective { eye, at, up, fovy } => (eye, at, up, fovy as f64),
+            Camera::Orthographic { eye, at, up, .. } => (eye, at, up, PI / 4.0),
+        };
+        View {
+            title: title.to_owned(),
+            camera: ViewCamera { eye: f32s(eye), at: f32s(at), up: f32s(up), fovy: fovy as f32 },
+            radius: radius as f32,
+            objects,
+            lights: light_marks(scene, radius),
+            trees: Vec::new(),
+        }
+    }
+
+    /// Adds the tree of pixel `pixel` under `label` ("yours", "expected").
+    pub fn add_tree(&mut self, scene: &Scene, label: &str, pixel: (u32, u32), tree: &RayTree) {
+        let mut segments = Vec::new();
+        walk(scene, self.radius as Float, tree, &mut segments);
+        self.trees.push(ViewTree {
+            label: label.to_owned(),
+            pixel: [pixel.0, pixel.1],
+            text: tree.to_string(),
+            segments,
+        });
+    }
+
+    /// The page: the data as JSON and the drawing code, nothing fetched.
+    pub fn to_html(&self) -> Result<String, String> {
+        // `</` would end the script element the JSON is in.
+        let data = serde_json::to_string(self).map_err(|e| e.to_string())?.replace("</", "<\\/");
+        let mut page = String::new();
+        let _ = write!(
+            page,
+            "<!doctype html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>{title}</title>\n<style>{STYLE}</style></head>\n\
+             <body><h1>{title}</h1>\n<div id=\"view\"></div>\n\
+             <script type=\"application/json\" id=\"view3d-data\">{data}</script>\n<script>{SCRIPT}</script>\n\
+             <script>raylabView3d(document.getElementById('view'), JSON.parse(document.getElementById('view3d-data').textContent));</script>\n\
+             </body></html>\n",
+            title = escape(&self.title),
+        );
+        Ok(page)
+    }
+}
+
+const STYLE: &str = "body{font:14px system-ui,sans-serif;background:#f6f6f4;color:#222;margin:1.5em}\
+    .view3d canvas{background:#202428;border-radius:4px;max-width:100%;cursor:grab}\
+    .view3d-controls label{margin-right:1.2em}.view3d-legend span{margin-right:1.2em}\
+    .view3d-legend span[data-kind]{white-space:nowrap}\
+    .view3d-legend{background:#202428;color:#ddd;padding:.3em .6em;max-width:708px;border-radius:4px}\
+    .view3d pre{font-size:12px;background:#fff;border:1px solid #ddd;padding:.5em;overflow-x:auto}";
+
+fn escape(text: &str) -> String {
+    text.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;")
+}
+
+/// `x` to the nearest multiple of `step`, as the f32 that prints shortest.
+fn quantized(x: Float, step: f64) -> f32 {
+    ((x as f64 / step).round() * step) as f32
+}
+
+fn f32s(v: Vec3) -> [f32; 3] {
+    [v.x as f32, v.y as f32, v.z as f32]
+}
+
+/// A colour the flat shading can show: dark materials lifted so that they stand out from the
+/// dark background, every channel in [0, 1].
+fn shown_color(c: Color) -> [f32; 3] {
+    let c = c.clamp(Color::ZERO, Color::ONE);
+    let lifted = Color::splat(0.25) + 0.75 * c;
+    f32s(lifted)
+}
+
+/// The segments of `tree` and of every ray below it.
+fn walk(scene: &Scene, escape: Float, tree: &RayTree, out: &mut Vec<Segment>) {
+    let dir = tree.dir.normalize_or_zero();
+    let length = match (tree.kind, tree.hit) {
+        (_, Some((_, t))) => t * tree.dir.length(),
+        (RayKind::Shadow, None) => reach_light(scene, tree.origin, dir).unwrap_or(escape),
+        (_, None) => escape,
+    };
+    let kind = match tree.kind {
+        RayKind::Eye => "eye",
+        RayKind::Shadow => "shadow",
+        RayKind::Reflected => "reflected",
+        RayKind::Transmitted => "transmitted",
+    };
+    out.push(Segment {
+        kind,
+        from: f32s(tree.origin),
+        to: f32s(tree.origin + length * dir),
+        weight: tree.weight as f32,
+        hit: tree.hit.map(|(object, _)| object),
+    });
+    for child in &tree.children {
+        walk(scene, escape, child, out);
+    }
+}
+
+/// How far along the unit `dir` from `origin` a shadow ray that saw its light went: to the
+/// nearest light it points at (a point or spot light on the ray; a rect or the disc a ball light
+/// is sampled on, crossed), `None` for a directional light or none found.
+fn reach_light(scene: &Scene, origin: Vec3, dir: Vec3) -> Option<Float> {
+    let on_ray = |p: Vec3| {
+        let t = (p - origin).dot(dir);
+        (t > 0.0 && (origin + t * dir - p).length() <= 1e-3 * t.max(1.0)).then_some(t)
+    };
+    scene
+        .lights
+        .iter()
+        .filter_map(|light| match light.kind {
+            LightKind::Directional { .. } => None,
+            LightKind::Point { position, .. } | LightKind::Spot { position, .. } => on_ray(position),
+            LightKind::Rect { corner, edge_u, edge_v, .. } => {
+                let n = edge_u.cross(edge_v);
+                let t = (corner - origin).dot(n) / dir.dot(n);
+                let p = origin + t * dir - corner;
+                // The point's coordinates along the edges, from the dual basis.
+                let (a, b) = (
+                    p.dot(edge_v.cross(n)) / edge_u.dot(edge_v.cross(n)),
+                    p.dot(edge_u.cross(n)) / edge_v.dot(edge_u.cross(n)),
+                );
+                let inside = (-1e-3..=1.001).contains(&a) && (-1e-3..=1.001).contains(&b);
+                (t.is_finite() && t > 0.0 && inside).then_some(t)
+            }
+            LightKind::Sphere { center, radius, .. } => {
+                let w = (origin - center).normalize_or_zero();
+                let t = (center - origin).dot(w) / dir.dot(w);
+                let inside = (origin + t * dir - center).length() <= radius * 1.001;
+                (t.is_finite() && t > 0.0 && inside).then_some(t)
+            }
+        })
+        .min_by(|a, b| a.total_cmp(b))
+}
+
+/// The lights, as segments: a small cross at a point or spot light, a rect's outline, three
+/// great circles of a ball light.
+fn light_marks(scene: &Scene, radius: Float) -> Vec<[f32; 6]> {
+    let segment = |a: Vec3, b: Vec3| {
+        let (a, b) = (f32s(a), f32s(b));
+        [a[0], a[1], a[2], b[0], b[1], b[2]]
+    };
+    let mut marks = Vec::new();
+    for light in &scene.lights {
+        match light.kind {
+            LightKind::Directional { .. } => {}
+            LightKind::Point { position, .. } | LightKind::Spot { position, .. } => {
+                let s = 0.03 * radius;
+                for axis in [Vec3::X, Vec3::Y, Vec3::Z] {
+                    marks.push(segment(position - s * axis, position + s * axis));
+                }
+            }
+            LightKind::Rect { corner, edge_u, edge_v, .. } => {
+                let corners = [corner, corner + edge_u, corner + edge_u + edge_v, corner + edge_v];
+                for i in 0..4 {
+                    marks.push(segment(corners[i], corners[(i + 1) % 4]));
+                }
+            }
+            LightKind::Sphere { center, radius: r, .. } => {
+                for (u, v) in [(Vec3::X, Vec3::Y), (Vec3::Y, Vec3::Z), (Vec3::Z, Vec3::X)] {
+                    let at = |k: usize| {
+                        let a = 2.0 * PI * k as f64 / SLICES as f64;
+                        center + r * (a.cos() as Float * u + a.sin() as Float * v)
+                    };
+                    marks.extend((0..SLICES).map(|k| segment(at(k), at(k + 1))));
+                }
+            }
+        }
+    }
+    marks
+}
+
+/// The centre and radius of the scene's bounds: every object but planes, the camera, the
+/// lights that have a place. Never a zero radius.
+fn bounds(scene: &Scene, solids: &[Vec<[Vec3; 3]>]) -> (Vec3, Float) {
+    let (eye, at) = match scene.camera {
+        Camera::Perspective { eye, at, .. } | Camera::Orthographic { eye, at, .. } => (eye, at),
+    };
+    let mut points: Vec<Vec3> = vec![eye, at];
+    points.extend(solids.iter().flatten().flatten().copied());
+    for light in &scene.lights {
+        match light.kind {
+            LightKind::Point { position, .. } | LightKind::Spot { position, .. } => points.push(position),
+            LightKind::Rect { corner, edge_u, edge_v, .. } => {
+                points.extend([corner, corner + edge_u + edge_v])
+            }
+            LightKind::Sphere { center, .. } => points.push(center),
+            LightKind::Directional { .. } => {}
+        }
+    }
+    let points: Vec<Vec3> = points.into_iter().filter(|p| p.is_finite()).collect();
+    let min = points.iter().fold(Vec3::splat(Float::INFINITY), |m, p| m.min(*p));
+    let max = points.iter().fold(Vec3::splat(Float::NEG_INFINITY), |m, p| m.max(*p));
+    let center = 0.5 * (min + max);
+    let radius = 0.5 * (max - min).length();
+    if center.is_finite() && radius.is_finite() && radius > 0.0 {
+        (center, radius)
+    } else {
+        (Vec3::ZERO, 1.0)
+    }
+}
+
+/// An object's triangles in world space. A plane is drawn as a square around the point of it
+/// nearest `around`'s centre, three of its radii across; without `around`, none.
+fn world_triangles(object: &raylab::scene::Object, around: Option<(Vec3, Float)>) -> Vec<[Vec3; 3]> {
+    let to_world = object.transform.map_or(Mat4::IDENTITY, |t| t.world_from_object);
+    let to_object = object.transform.map_or(Mat4::IDENTITY, |t| t.object_from_world);
+    let local = match &object.shape {
+        Shape::Sphere { center, radius } => sphere(*center, *radius),
+        Shape::Plane { normal, offset } => match around {
+            Some((center, radius)) => {
+                let c = to_object.transform_point3(center);
+                let on = c - (normal.dot(c) - offset) * *normal;
+                let (u, v) = normal.any_orthonormal_pair();
+                let s = 1.5 * radius;
+                quad([on - s * u - s * v, on + s * u - s * v, on + s * u + s * v, on - s * u + s * v])
+            }
+            None => Vec::new(),
+        },
+        Shape::Box { min, max } => cuboid(*min, *max),
+        Shape::Polygon { vertices } => (1..vertices.len().saturating_sub(1))
+            .map(|i| [vertices[0], vertices[i], vertices[i + 1]])
+            .collect(),
+        Shape::Triangle { vertices, .. } => vec![*vertices],
+        Shape::Mesh(mesh) => mesh.triangles.iter().map(|t| t.map(|i| mesh.positions[i as usize])).collect(),
+        Shape::Cylinder => lathe(|z| (1.0, z), true, true),
+        Shape::Cone => lathe(|z| (1.0 - z, z), true, false),
+    };
+    local.into_iter().map(|t| t.map(|p| to_world.transform_point3(p))).collect()
+}
+
+fn quad(c: [Vec3; 4]) -> Vec<[Vec3; 3]> {
+    vec![[c[0], c[1], c[2]], [c[0], c[2], c[3]]]
+}
+
+fn sphere(center: Vec3, radius: Float) -> Vec<[Vec3; 3]> {
+    let at = |ring: usize, slice: usize| {
+        let (theta, phi) = (PI * ring as f64 / RINGS as f64, 2.0 * PI * slice as f64 / SLICES as f64);
+        center
+            + radius
+                * Vec3::new(
+                    (theta.sin() * phi.cos()) as Float,
+                    theta.cos() as Float,
+                    (theta.sin() * phi.sin()) as Float,
+                )
+    };
+    let mut triangles = Vec::new();
+    for ring in 0..RINGS {
+        for slice in 0..SLICES {
+            let c = [at(ring, slice), at(ring, slice + 1), at(ring + 1, slice + 1), at(ring + 1, slice)];
+            // The poles' quads are triangles: leave out the one of zero area.
+            if ring > 0 {
+                triangles.push([c[0], c[1], c[2]]);
+            }
+            if ring + 1 < RINGS {
+                triangles.push([c[0], c[2], c[3]]);
+            }
+        }
+    }
+    triangles
+}
+
+fn cuboid(min: Vec3, max: Vec3) -> Vec<[Vec3; 3]> {
+    let p = |x: bool, y: bool, z: bool| {
+        Vec3::new(if x { max.x } else { min.x }, if y { max.y } else { min.y }, if z { max.z } else { min.z })
+    };
+    let mut triangles = Vec::new();
+    for side in [false, true] {
+        triangles.extend(quad([
+            p(side, false, false),
+            p(side, true, false),
+            p(side, true, true),
+            p(side, false, true),
+        ]));
+        triangles.extend(quad([
+            p(false, side, false),
+            p(true, side, false),
+            p(true, side, true),
+            p(false, side, true),
+        ]));
+        triangles.extend(quad([
+            p(false, false, side),
+            p(true, false, side),
+            p(true, true, side),
+            p(false, true, side),
+        ]));
+    }
+    triangles
+}
+
+/// A solid of revolution about z from z = 0 to 1, its radius and height at `profile(z)`, with a
+/// disc at the bottom and (`top`) at the top.
+fn lathe(profile: impl Fn(Float) -> (Float, Float), bottom: bool, top: bool) -> Vec<[Vec3; 3]> {
+    let ring = |k: usize, z: Float| {
+        let a = 2.0 * PI * k as f64 / SLICES as f64;
+        let (r, h) = profile(z);
+        Vec3::new(r * a.cos() as Float, r * a.sin() as Float, h)
+    };
+    let mut triangles = Vec::new();
+    for k in 0..SLICES {
+        triangles.extend(quad([ring(k, 0.0), ring(k + 1, 0.0), ring(k + 1, 1.0), ring(k, 1.0)]));
+        if bottom {
+            triangles.push([Vec3::ZERO, ring(k + 1, 0.0), ring(k, 0.0)]);
+        }
+        if top {
+            triangles.push([Vec3::Z, ring(k, 1.0), ring(k + 1, 1.0)]);
+        }
+    }
+    triangles
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_sphere_is_closed_and_on_its_surface() {
+        let triangles = sphere(Vec3::new(1.0, 2.0, 3.0), 2.0);
+        assert_eq!(triangles.len(), 2 * SLICES * (RINGS - 1));
+        for p in triangles.iter().flatten() {
+            assert!(((*p - Vec3::new(1.0, 2.0, 3.0)).length() - 2.0).abs() < 1e-5, "{p}");
+        }
+    }
+
+    #[test]
+    fn a_box_has_twelve_triangles_on_its_faces() {
+        let triangles = cuboid(Vec3::ZERO, Vec3::new(1.0, 2.0, 3.0));
+        assert_eq!(triangles.len(), 12);
+        for p in triangles.iter().flatten() {
+            let on_face = p.x == 0.0 || p.x == 1.0 || p.y == 0.0 || p.y == 2.0 || p.z == 0.0 || p.z == 3.0;
+            assert!(on_face, "{p}");
+        }
+    }
+
+    /// A shadow ray's segment ends at the light it saw: the point light 5 away along it, the
+    /// rect it crosses at t = 2, the ball light's disc at t = 4.
+    #[test]
+    fn an_unblocked_shadow_ray_ends_at_its_light() {
+        use raylab::scene::{Attenuation, Light};
+        let light = |kind| Light { color: Color::ONE, shadows: true, kind };
+        let mut scene = Scene {
+            camera: Camera::Perspective { eye: Vec3::Z, at: Vec3::ZERO, up: Vec3::Y, fovy: 1.0 },
+            width: 4,
+            height: 4,
+            background: Color::ZERO,
+            ambient: Color::ZERO,
+            lights: Vec::new(),
+            materials: Vec::new(),
+            objects: Vec::new(),
+            render: Default::default(),
+        };
+        scene.lights = vec![light(LightKind::Point {
+            position: Vec3::new(0.0, 5.0, 0.0),
+            attenuation: Attenuation::default(),
+        })];
+        assert_eq!(reach_light(&scene, Vec3::ZERO, Vec3::Y), Some(5.0));
+        assert_eq!(reach_light(&scene, Vec3::ZERO, Vec3::X), None);
+        scene.lights = vec![light(LightKind::Rect {
+            corner: Vec3::new(-1.0, 2.0, -1.0),
+            edge_u: Vec3::new(2.0, 0.0, 0.0),
+            edge_v: Vec3::new(0.0, 0.0, 2.0),
+            attenuation: Attenuation::default(),
+        })];
+        assert_eq!(reach_light(&scene, Vec3::ZERO, Vec3::Y), Some(2.0));
+        assert_eq!(reach_light(&scene, Vec3::ZERO, Vec3::new(0.8, 0.6, 0.0)), None);
+        scene.lights = vec![light(LightKind::Sphere {
+            center: Vec3::new(0.0, 4.0, 0.0),
+            radius: 1.0,
+            attenuation: Attenuation::default(),
+        })];
+        let t = reach_light(&scene, Vec3::ZERO, Vec3::new(0.1, 1.0, 0.0).normalize()).unwrap();
+        assert!((t - 4.0 * Vec3::new(0.1, 1.0, 0.0).length()).abs() < 1e-4, "{t}");
+    }
+}
