@@ -56,7 +56,10 @@ fn own_subject(id: &str, address: &str, token: u64) -> std::process::Output {
 /// The verdict of check `id` run locally, in one process (`run ID --verdict FILE`): what the
 /// judged run must agree with.
 fn local_verdict(id: &str) -> String {
-    let file = std::env::temp_dir().join(format!("raylab-local-verdict-{}.json", std::process::id()));
+    // One file per call: the tests run in parallel threads of one process.
+    static CALLS: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+    let call = CALLS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    let file = std::env::temp_dir().join(format!("raylab-local-verdict-{}-{call}.json", std::process::id()));
     let out = Command::new(env!("CARGO_BIN_EXE_raylab-checks"))
         .args(["run", id, "--verdict"])
         .arg(&file)
