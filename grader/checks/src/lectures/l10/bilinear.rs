@@ -82,7 +82,29 @@ pub(super) fn bilinear_cases(bilinear: BilinearFn) -> CheckResult {
         vec3(got),
         "an empty image gives black",
     )?;
-    Ok("8 centres, 4 blends, 7 wrapped points, an empty image".into())
+    // A taller image, 2 × 4, pixel (i, j) = (i, j, 1): between rows 1 and 2 the next row down is
+    // j + 1, which a 2-row image cannot tell from j − 1 (both wrap to the other row). At u = ¼
+    // (column 0's centre), v = ½ is y = 1.5 and v = 0.5625 is y = 1.25: green 1.5 and 1.25, exact.
+    let tall = Image::from_pixels(
+        2,
+        4,
+        (0..4).flat_map(|j| (0..2).map(move |i| v3(i as Float, j as Float, 1.0))).collect(),
+    );
+    for (p, expected, what) in [
+        (uv(0.25, 0.5), v3(0.0, 1.5, 1.0), "halfway between pixels (0, 1) and (0, 2)"),
+        (uv(0.25, 0.5625), v3(0.0, 1.25, 1.0), "a quarter of the way from pixel (0, 1) to (0, 2)"),
+    ] {
+        let got = bilinear(&tall, p);
+        let case = format!("2 × 4 image, pixel (i, j) = (i, j, 1): uv {}, {what}", show2(p));
+        ensure(
+            got == expected,
+            case,
+            vec3(expected),
+            vec3(got),
+            "the row below row j is j + 1 (y grows downward)",
+        )?;
+    }
+    Ok("8 centres, 6 blends, 7 wrapped points, an empty image".into())
 }
 
 #[cfg(test)]
