@@ -78,6 +78,7 @@ pub(super) fn checker_3d_cases(checker_3d: Checker3dFn) -> CheckResult {
         (v3(1.5, 2.5, 0.5), 1.0, B, "cube (1, 2, 0)"),
         (v3(0.6, 0.1, 0.1), 2.0, B, "scale 2: cube (1, 0, 0)"),
         (v3(0.6, 0.6, 0.1), 2.0, A, "scale 2: cube (1, 1, 0)"),
+        (v3(0.1, 0.1, 0.6), 2.0, B, "scale 2: cube (0, 0, 1)"),
     ] {
         let got = checker_3d(p, scale, A, B);
         let case = format!("solid checker of scale {scale} at {}, {why}", vec3(p));
@@ -92,7 +93,7 @@ pub(super) fn checker_3d_cases(checker_3d: Checker3dFn) -> CheckResult {
         };
         ensure(got == expected, case, name(expected), name(got), cause)?;
     }
-    Ok("12 points".into())
+    Ok("13 points".into())
 }
 
 #[cfg(test)]

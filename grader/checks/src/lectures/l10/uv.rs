@@ -141,7 +141,17 @@ pub(super) fn triangle_cases(triangle_uv: TriangleUvFn) -> CheckResult {
         let case = format!("vertex uvs (0, 0), (1, 0.25), (0.5, 1): {name}");
         same_uv(&case, triangle_uv(&uvs, beta, gamma), expected, tolerance, cause)?;
     }
-    Ok("5 points".into())
+    // Vertex a's uv away from (0, 0), so that its weight shows: at β = γ = ¼ the weights are
+    // ½, ¼, ¼, and ½(0.25, 0.5) + ¼(1, 0.25) + ¼(0.5, 1) = (0.5, 0.5625), exact.
+    let moved = [uv(0.25, 0.5), uvs[1], uvs[2]];
+    same_uv(
+        "vertex uvs (0.25, 0.5), (1, 0.25), (0.5, 1): β = γ = ¼",
+        triangle_uv(&moved, 0.25, 0.25),
+        uv(0.5, 0.5625),
+        0.0,
+        cause,
+    )?;
+    Ok("6 points".into())
 }
 
 #[cfg(test)]
