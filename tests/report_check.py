@@ -4,8 +4,12 @@ of book/browsercheck.py) and checks that it works offline:
   - every <img> loaded (expected / yours / difference of each scene), at least three;
   - no request went anywhere but file:// (or data:);
   - clicking a pixel of a scene's image shows the command that prints its ray tree;
-  - the ray tree of the first differing pixel of a failed scene is in the page.
-Usage: python3 tests/report_check.py REPORT.html [--chromium PATH]
+  - the ray tree of the first differing pixel of a failed scene is in the page;
+  - a failed scene's 3D view (at stages that trace a ray tree) opens by itself, its WebGL canvas
+    draws (pixels not all background), and a click on the scene's "yours" image far from the
+    pixel shown picks another grid pixel: the trees drawn, their text and the canvas change.
+Usage: python3 tests/report_check.py REPORT.html [--chromium PATH] [--expect-view]
+(--expect-view: the report must hold a 3D view.)
 Exit status 0 when it passes, 1 naming each failure, 2 when Chromium is missing.
 """
 import argparse
@@ -30,7 +34,51 @@ PROBE = r"""
                                                  clientY: rect.top + rect.height / 2, bubbles: true}));
     picked = document.getElementById('picked').textContent;
   }
+  // The first 3D view: open by itself; its data is a script loaded from beside the images.
+  const frame = () => new Promise(r => requestAnimationFrame(() => r()));
+  const box = document.querySelector('details[data-view]');
+  let view = null;
+  if (box) {
+    const root = () => box.querySelector('.view3d');
+    for (let i = 0; i < 200 && !(root() && root().dataset.pixel); i++) await new Promise(r => setTimeout(r, 50));
+    view = {open: box.open, loaded: !!(root() && root().dataset.pixel)};
+    if (view.loaded) {
+      const canvas = root().querySelector('canvas');
+      const pixels = () => {
+        const copy = document.createElement('canvas');
+        copy.width = canvas.width; copy.height = canvas.height;
+        const c = copy.getContext('2d');
+        c.drawImage(canvas, 0, 0);
+        return c.getImageData(0, 0, copy.width, copy.height).data;
+      };
+      const background = [32, 36, 40];
+      const off = (a, i, rgb) => Math.abs(a[i] - rgb[0]) + Math.abs(a[i + 1] - rgb[1]) + Math.abs(a[i + 2] - rgb[2]) >= 12;
+      await frame();
+      const before = pixels();
+      view.drawn = 0;
+      for (let i = 0; i < before.length; i += 4) if (off(before, i, background)) view.drawn++;
+      view.pixelBefore = root().dataset.pixel;
+      view.textBefore = root().querySelector('pre').textContent;
+      // A click on "yours" in the opposite quarter of the image from the pixel shown.
+      const yours = box.closest('td').querySelector('img[alt=yours]');
+      const [px, py] = view.pixelBefore.split(',').map(Number);
+      const fx = px < yours.naturalWidth / 2 ? 0.85 : 0.15, fy = py < yours.naturalHeight / 2 ? 0.85 : 0.15;
+      const rect = yours.getBoundingClientRect();
+      yours.dispatchEvent(new MouseEvent('click', {clientX: rect.left + fx * rect.width,
+                                                   clientY: rect.top + fy * rect.height, bubbles: true}));
+      await frame();
+      await frame();
+      const after = pixels();
+      view.pixelAfter = root().dataset.pixel;
+      view.textChanged = root().querySelector('pre').textContent !== view.textBefore;
+      view.changed = 0;
+      for (let i = 0; i < after.length; i += 4) if (off(after, i, [before[i], before[i + 1], before[i + 2]])) view.changed++;
+      view.caption = box.querySelector('.picked3d').textContent;
+    }
+  }
   return JSON.stringify({
+    view,
+    views: document.querySelectorAll('details[data-view]').length,
     images: images.length,
     broken: images.filter(i => !(i.complete && i.naturalWidth > 0)).map(i => i.getAttribute('src')),
     picked: picked,
@@ -45,6 +93,7 @@ def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("report")
     parser.add_argument("--chromium", default="/usr/bin/chromium")
+    parser.add_argument("--expect-view", action="store_true", help="fail when the report holds no 3D view")
     args = parser.parse_args()
     if not shutil.which(args.chromium):
         print(f"SKIPPED the report's browser check: {args.chromium} is missing (apt-get install chromium)")
@@ -76,13 +125,26 @@ def main():
                 failures.append(f"clicking a pixel shows {r['picked']!r}, not the ray-tree command")
             if r["failed"] and not r["trees"]:
                 failures.append("a failed scene without the ray tree of its first differing pixel")
+            v = r["view"]
+            if v is None and args.expect_view:
+                failures.append("no 3D view in the report (a failed scene of stage 08 or 10 has one)")
+            if v is not None:
+                if not (v["open"] and v["loaded"]):
+                    failures.append(f"the first 3D view did not open and load its data: {v}")
+                elif v["drawn"] < 1000:
+                    failures.append(f"the 3D view's canvas drew {v['drawn']} pixels not background")
+                elif v["pixelAfter"] == v["pixelBefore"] or not v["textChanged"] or v["changed"] < 50:
+                    failures.append(f"a click on 'yours' did not change the trees drawn: {v}")
             for event in browser.events:
                 if event.get("method") == "Network.requestWillBeSent":
                     scheme = event["params"]["request"]["url"].split(":", 1)[0]
                     if scheme not in ("file", "data"):
                         failures.append(f"the page requested {event['params']['request']['url']}")
-            print(f"report: {r['images']} images, {r['failed']} failed rows, {r['trees']} ray trees; "
-                  f"click: {r['picked']}")
+            print(f"report: {r['images']} images, {r['failed']} failed rows, {r['trees']} ray trees, "
+                  f"{r['views']} 3D views; click: {r['picked']}")
+            if v is not None and v.get("loaded"):
+                print(f"3D view: {v['drawn']} pixels drawn; pixel {v['pixelBefore']} -> {v['pixelAfter']} "
+                      f"({v['changed']} canvas pixels changed): {v['caption']}")
             for f in failures:
                 print(f"FAILED: {f}")
             return 1 if failures else 0

@@ -66,9 +66,15 @@ fn html(ws: &Workspace, grade: &Grade, out: &Path) -> String {
     if !lecture.is_empty() {
         body.push_str("</table>\n");
     }
+    // The 3D views' drawing code, once, where a failed scene has a view.
+    let view3d = if body.contains("class=\"view3d-box\"") {
+        format!("<script>{VIEW3D}</script>\n")
+    } else {
+        String::new()
+    };
     format!(
         "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>raylab grade {got}/{max}</title>\n\
-         <style>{STYLE}</style>\n</head>\n<body>\n{body}<div id=\"picked\" hidden></div>\n<script>{SCRIPT}</script>\n</body>\n</html>\n"
+         <style>{STYLE}</style>\n</head>\n<body>\n{body}<div id=\"picked\" hidden></div>\n{view3d}<script>{SCRIPT}</script>\n</body>\n</html>\n"
     )
 }
 
@@ -138,14 +144,43 @@ fn images_row(body: &mut String, ws: &Workspace, v: &Verdict, out: &Path) {
          <figure><img src=\"{}\" alt=\"expected\"><figcaption>expected</figcaption></figure>\
          <figure><img src=\"{}\" alt=\"yours\"><figcaption>yours</figcaption></figure>\
          <figure><img src=\"{}\" alt=\"difference (FLIP)\"><figcaption>difference (FLIP), mean {}</figcaption></figure>\
-         <p class=\"hint\">Click a pixel for the command that prints its ray tree.</p>{}</td></tr>",
+         <p class=\"hint\">Click a pixel for the command that prints its ray tree{}.</p>{}{}</td></tr>",
         escape(&scene),
         relative("expected.png"),
         relative("yours.png"),
         relative("diff.png"),
         escape(&flip),
-        if tree.is_empty() { String::new() } else { format!("<pre class=\"tree\">{}</pre>", escape(&tree)) }
+        if scene_dir.join(VIEW_DATA).is_file() {
+            " and, in the 3D view, the trees of the nearest pixel of a grid"
+        } else {
+            ""
+        },
+        if tree.is_empty() { String::new() } else { format!("<pre class=\"tree\">{}</pre>", escape(&tree)) },
+        view_box(&scene_dir, &relative(""))
     );
+}
+
+/// The script the checks write beside a failed scene's images: its 3D view's data (geometry, and
+/// the expected and your ray trees of a grid of pixels), loaded when the view is opened; or the
+/// reason there is none.
+const VIEW_DATA: &str = "view3d-data.js";
+const VIEW_MISSING: &str = "view3d-missing.txt";
+
+/// The 3D view of a failed scene: a box that loads its data when opened (the first is open).
+fn view_box(scene_dir: &Path, relative: &str) -> String {
+    if scene_dir.join(VIEW_DATA).is_file() {
+        let key = relative.trim_end_matches('/');
+        format!(
+            "<details class=\"view3d-box\" data-view=\"{}\" data-src=\"{}{VIEW_DATA}\"><summary>The ray trees in 3D: \
+             expected and yours over the scene</summary><p class=\"picked3d\"></p><div class=\"view3d-root\"></div></details>",
+            escape(key),
+            escape(relative)
+        )
+    } else if let Ok(why) = std::fs::read_to_string(scene_dir.join(VIEW_MISSING)) {
+        format!("<p class=\"hint\">No 3D view: {}</p>", escape(why.trim()))
+    } else {
+        String::new()
+    }
 }
 
 fn escape(text: &str) -> String {
@@ -167,19 +202,65 @@ figure img { image-rendering: pixelated; width: 240px; cursor: crosshair; border
 figcaption { font-size: 0.85em; color: #555; }
 pre { background: #f6f8fa; padding: 0.6em; overflow-x: auto; }
 .compile { border-left: 4px solid #cf222e; padding-left: 1em; }
+details.view3d-box { margin-top: 0.6em; }
+details.view3d-box summary { cursor: pointer; font-weight: bold; }
+.view3d canvas { background: #202428; border-radius: 4px; max-width: 100%; cursor: grab; }
+.view3d-controls label { margin-right: 1.2em; }
+.view3d-legend { background: #202428; color: #ddd; padding: 0.3em 0.6em; max-width: 708px; border-radius: 4px; }
+.view3d-legend span { margin-right: 1.2em; }
+.view3d-legend span[data-kind] { white-space: nowrap; }
+.view3d-texts { display: flex; gap: 1em; flex-wrap: wrap; }
+.view3d-texts pre { font-size: 12px; flex: 1 1 30em; }
 #picked { position: fixed; bottom: 1em; right: 1em; background: #fff; border: 1px solid #888; padding: 0.6em; }
 ";
 
+/// The 3D view's drawing code (the checks' `grader render --view` pages use the same).
+const VIEW3D: &str = include_str!("../checks/assets/view3d.js");
+
 const SCRIPT: &str = "
+// A failed scene's 3D view: its data is a script beside its images, loaded when the box opens.
+function openView(box, then) {
+  if (box.view) { if (then) then(box.view); return; }
+  if (box.dataset.loading) return;
+  box.dataset.loading = '1';
+  const script = document.createElement('script');
+  script.src = box.dataset.src;
+  script.onload = () => {
+    const data = window.raylabViewData && window.raylabViewData[box.dataset.view];
+    if (!data) return;
+    box.view = raylabView3d(box.querySelector('.view3d-root'), data);
+    const first = data.trees.length > 0 ? data.trees[0].pixel : null;
+    if (first) box.querySelector('.picked3d').textContent = 'Pixel (' + first.join(', ') +
+      '), the grid pixel nearest the first that differs. Click the expected or your image to pick another.';
+    if (then) then(box.view);
+  };
+  document.head.append(script);
+}
+for (const box of document.querySelectorAll('details[data-view]')) {
+  box.addEventListener('toggle', () => { if (box.open) openView(box); });
+}
+const firstBox = document.querySelector('details[data-view]');
+if (firstBox) firstBox.open = true;
 for (const img of document.querySelectorAll('td[data-scene] img')) {
   img.addEventListener('click', (event) => {
     const rect = img.getBoundingClientRect();
     const x = Math.floor((event.clientX - rect.left) / rect.width * img.naturalWidth);
     const y = Math.floor((event.clientY - rect.top) / rect.height * img.naturalHeight);
-    const scene = img.closest('td').dataset.scene;
+    const cell = img.closest('td');
+    const scene = cell.dataset.scene;
     const box = document.getElementById('picked');
     box.hidden = false;
     box.textContent = 'pixel (' + x + ', ' + y + '): cargo run -p grader -- render ' + scene + ' --tree ' + x + ',' + y;
+    const view = cell.querySelector('details[data-view]');
+    if (view) {
+      view.open = true;
+      openView(view, (v) => {
+        const at = v.pick(x, y);
+        if (at) view.querySelector('.picked3d').textContent = 'Pixel (' + at.join(', ') +
+          '), the grid pixel nearest your click (' + x + ', ' + y + '): the report holds the trees of one pixel in every ' +
+          v.step + ' × ' + v.step + ' block.';
+      });
+    }
   });
 }
 ";

@@ -2,12 +2,14 @@
 // Hand-written WebGL 1, no library: the page draws triangles and lines that the grader computed
 // (it tessellates the scene and walks the tree; nothing is traced here). Offline, one file.
 //
-//   raylabView3d(root, data)  fills `root` with a canvas, its controls and the trees as text.
+//   raylabView3d(root, data)  fills `root` with a canvas, its controls and the trees as text,
+//                             and returns {show(trees), pick(x, y)}.
 //
 // data: {title, camera: {eye, at, up, fovy}, radius, objects: [{name, color, triangles}],
 //        lights: [segments of 6 numbers], trees: [{label, pixel, text, segments:
-//        [{kind, from, to, weight, hit}]}]}. Mouse: drag orbits, shift-drag or right-drag pans,
-// the wheel zooms.
+//        [{kind, from, to, weight, hit}]}], and in the report grid: {step, expected: [trees],
+//        yours: [trees]}, the trees of every step-th pixel}. Mouse: drag orbits, shift-drag or
+// right-drag pans, the wheel zooms. `pick` shows the grid's trees nearest pixel (x, y).
 "use strict";
 
 window.raylabView3d = function (root, data) {
@@ -33,13 +35,10 @@ window.raylabView3d = function (root, data) {
   }
 
   // The controls: surfaces as faces or edges, each tree shown or not, a legend.
-  const state = { wire: false, shown: data.trees.map(() => true), hiddenKinds: new Set() };
+  const state = { wire: false, shown: [], hiddenKinds: new Set() };
   const wire = checkbox("wireframe", false, (on) => { state.wire = on; draw(); });
-  controls.append(wire);
-  data.trees.forEach((tree, i) => {
-    const label = tree.label + " (pixel " + tree.pixel[0] + ", " + tree.pixel[1] + ")";
-    controls.append(checkbox(label, true, (on) => { state.shown[i] = on; draw(); }, "tree-" + i));
-  });
+  const treeBoxes = document.createElement("span");
+  controls.append(wire, treeBoxes);
   const legend = document.createElement("div");
   legend.className = "view3d-legend";
   for (const [kind, name] of [["eye", "eye"], ["shadow", "shadow, reaches the light"],
@@ -61,10 +60,43 @@ window.raylabView3d = function (root, data) {
   }
   legend.append(text("span", "click a kind: hide or show it · drag: orbit · shift-drag: pan · wheel: zoom"));
   root.append(legend);
-  for (const tree of data.trees) {
-    root.append(text("pre", tree.label + ", pixel (" + tree.pixel[0] + ", " + tree.pixel[1] + "):\n" + tree.text));
+  const texts = document.createElement("div");
+  texts.className = "view3d-texts";
+  root.append(texts);
+  // The trees shown: a checkbox and the text of each (the first in full colour, the second a shade
+  // lighter), and their lines once there is WebGL.
+  let trees = [];
+  function show(list) {
+    state.shown = list.map(() => true);
+    treeBoxes.replaceChildren(...list.map((tree, i) => {
+      const label = tree.label + (i > 0 ? ", lighter" : "") + " (pixel " + tree.pixel[0] + ", " + tree.pixel[1] + ")";
+      return checkbox(label, true, (on) => { state.shown[i] = on; draw(); }, "tree-" + i);
+    }));
+    texts.replaceChildren(...list.map((tree) =>
+      text("pre", tree.label + ", pixel (" + tree.pixel[0] + ", " + tree.pixel[1] + "):\n" + tree.text)));
+    root.dataset.pixel = list.length > 0 ? list[0].pixel.join(",") : "";
+    if (gl) {
+      trees = list.map(treeLines);
+      draw();
+    }
   }
-  if (!gl) return;
+  // The grid's pair of trees nearest pixel (x, y): the centre of the step × step block it lies in.
+  function pick(x, y) {
+    const grid = data.grid;
+    if (!grid || grid.expected.length === 0) return null;
+    const last = grid.expected[grid.expected.length - 1].pixel;
+    const centre = (v, max) => Math.min(Math.floor(v / grid.step) * grid.step + grid.step / 2, max);
+    const at = [centre(x, last[0]), centre(y, last[1])];
+    const i = grid.expected.findIndex((t) => t.pixel[0] === at[0] && t.pixel[1] === at[1]);
+    if (i < 0) return null;
+    show([grid.expected[i], grid.yours[i]]);
+    return at;
+  }
+  const api = { show, pick, step: data.grid ? data.grid.step : null };
+  if (!gl) {
+    show(data.trees);
+    return api;
+  }
 
   // Two programs: lit flat faces, and unlit coloured lines and points.
   const faces = program(
@@ -94,8 +126,8 @@ window.raylabView3d = function (root, data) {
       edges: buffer(edges), edgeCount: edges.length / 3 };
   });
 
-  // Each tree: for each kind of ray, its segments as coloured lines and its hits as points.
-  const trees = data.trees.map((tree, i) => {
+  // A tree: for each kind of ray, its segments as coloured lines and its hits as points.
+  function treeLines(tree, i) {
     // A second tree (yours beside the expected) a shade lighter, so that the two read apart.
     const tint = i === 0 ? 1.0 : 0.6;
     const kinds = {};
@@ -113,19 +145,24 @@ window.raylabView3d = function (root, data) {
     return Object.entries(kinds).map(([kind, k]) => ({ kind,
       lines: { positions: buffer(k.positions), colors: buffer(k.colors), count: k.positions.length / 3 },
       points: { positions: buffer(k.points), colors: buffer(k.pointColors), count: k.points.length / 3 } }));
-  });
+  }
   const lights = data.lights.flat();
   const lightLines = { positions: buffer(lights), count: lights.length / 3,
     colors: buffer(Array.from({ length: lights.length / 3 }, () => [1, 0.95, 0.6, 1]).flat()) };
 
   // The orbit: the camera's offset from the point it looks at, turned about `up`.
-  // It looks at the first tree's first hit (else where the scene's camera looks), from beside
-  // the scene's camera, a little turned: from the camera itself the eye ray would be a point.
+  // It looks at the first tree's first hit (else, or when that lies far outside the scene's
+  // bounds, where the scene's camera looks), from beside the scene's camera, a little turned and
+  // raised: from the camera itself the eye ray would be a point, and from its height a floor
+  // would be seen edge on.
   const up = normalize(data.camera.up);
   const first = data.trees.length > 0 && data.trees[0].segments[0];
-  const at = first && first.hit !== null ? first.to : data.camera.at;
+  const near = first && first.hit !== null && length(sub(first.to, data.camera.at)) <= 2 * data.radius;
+  const at = near ? first.to : data.camera.at;
+  const turned = rotate(sub(data.camera.eye, at), up, 0.5);
+  const raised = rotate(turned, normalize(cross(turned, up)), 0.35);
   const camera = { at: at.slice(), up, fovy: data.camera.fovy,
-    offset: rotate(sub(data.camera.eye, at), up, 0.5) };
+    offset: Math.abs(dot(normalize(raised), up)) < 0.995 ? raised : turned };
   let drag = null;
   canvas.addEventListener("contextmenu", (e) => e.preventDefault());
   canvas.addEventListener("mousedown", (e) => { drag = { x: e.clientX, y: e.clientY, pan: e.shiftKey || e.button === 2 }; });
@@ -155,7 +192,8 @@ window.raylabView3d = function (root, data) {
     draw();
   }, { passive: false });
 
-  draw();
+  show(data.trees);
+  return api;
 
   function draw() {
     gl.viewport(0, 0, canvas.width, canvas.height);

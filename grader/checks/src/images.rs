@@ -196,6 +196,17 @@ fn stage_snapshot(file: &SceneFile, stage: &str) -> PathBuf {
     file.snapshot(if stage == file.lecture { ".png" } else { ".final.png" })
 }
 
+/// The blessed ray trees of the report's grid of pixels beside [`stage_snapshot`]: `S.trees.json`,
+/// `S.final.trees.json` (stages that trace a ray tree: 08 and 10).
+fn trees_snapshot(file: &SceneFile, stage: &str) -> PathBuf {
+    file.snapshot(if stage == file.lecture { ".trees.json" } else { ".final.trees.json" })
+}
+
+/// Whether stage `stage` traces a ray tree (and so has blessed trees for the report's 3D view).
+fn traces_trees(stage: &str) -> bool {
+    matches!(stage, "08" | "10")
+}
+
 /// The three geometry images of `scene` drawn with the intersections of the
 /// scene's lecture (see the module documentation).
 #[allow(unused_variables)]
@@ -403,7 +414,9 @@ fn compare_with_snapshot(
         100.0 * file.allowed_fraction(),
         images.flip_mean
     );
-    let _ = std::fs::remove_file(dir.join("tree.txt"));
+    for stale in ["tree.txt", VIEW_DATA, VIEW_MISSING] {
+        let _ = std::fs::remove_file(dir.join(stale));
+    }
     Ok(Compared { expected, comparison, images, measured })
 }
 
@@ -429,8 +442,18 @@ fn check_image(file: &SceneFile, stage: &str, dir: &Path) -> CheckResult {
     let Some((x, y)) = differs else {
         return compared.map_or_else(|| Ok(String::new()), |c| c.map(|c| c.measured));
     };
-    // The ray tree of the first differing pixel, for the report (stages that trace a ray tree).
+    // The ray tree of the first differing pixel, for the report (stages that trace a ray tree),
+    // and those of the report's grid of pixels, for its 3D view.
     let tree = judge::student(|| stages::pixel_tree(stage, &scene, (x, y)));
+    // (As JSON: the trees' compact form leaves out empty fields, which postcard cannot.)
+    #[cfg(feature = "l08")]
+    let grid = if traces_trees(stage) {
+        judge::student(|| {
+            stages::grid_trees(stage, &scene).and_then(|trees| serde_json::to_string(&trees).ok())
+        })
+    } else {
+        None
+    };
     let cause = if stage == "01" {
         judge::judge_only(|| camera_diagnosis(&yours))
     } else {
@@ -471,6 +494,13 @@ fn check_image(file: &SceneFile, stage: &str, dir: &Path) -> CheckResult {
         let text = format!("your ray tree of pixel ({x}, {y}), the first that differs: {text}");
         let _ = std::fs::write(dir.join("tree.txt"), text);
     }
+    #[cfg(feature = "l08")]
+    if let Some(yours) = grid {
+        // The report is an aid: without its 3D view the verdict stands, the reason is in the page.
+        if let Err(e) = write_view(file, stage, &scene, &yours, (x, y), dir) {
+            let _ = std::fs::write(dir.join(VIEW_MISSING), e);
+        }
+    }
     let show = |c: Color| format!("({:.3}, {:.3}, {:.3})", c.x, c.y, c.z);
     Err(Failure {
         case,
@@ -479,6 +509,39 @@ fn check_image(file: &SceneFile, stage: &str, dir: &Path) -> CheckResult {
         cause,
         images: Some(Box::new(compared.images)),
     })
+}
+
+/// The report's 3D view of a failed scene, as a script beside its images (`report.rs` loads it when
+/// the view is opened), or why there is none.
+const VIEW_DATA: &str = "view3d-data.js";
+const VIEW_MISSING: &str = "view3d-missing.txt";
+
+/// Writes [`VIEW_DATA`] into `dir`: the scene's geometry, the blessed expected trees of the grid's
+/// pixels and yours, the pair nearest the first differing pixel `first` drawn first. Its key in
+/// the page is `dir`'s last two parts (`08/whitted`, `10/final-07-glass-spheres`).
+#[cfg(feature = "l08")]
+fn write_view(
+    file: &SceneFile,
+    stage: &str,
+    scene: &Scene,
+    yours: &str,
+    first: (u32, u32),
+    dir: &Path,
+) -> Result<(), String> {
+    let yours: Vec<crate::view3d::TreeNode> =
+        serde_json::from_str(yours).map_err(|e| format!("your trees could not be read back ({e})"))?;
+    let path = trees_snapshot(file, stage);
+    let blessed =
+        std::fs::read_to_string(&path).map_err(|e| no_snapshot(file, format!("{}: {e}", path.display())))?;
+    let expected: crate::view3d::GridTrees =
+        serde_json::from_str(&blessed).map_err(|e| format!("{}: {e}", path.display()))?;
+    let title = format!("{}/{} at stage {stage}", file.folder, file.name());
+    let mut view = crate::view3d::View::new(scene, &title);
+    view.set_grid(scene, &expected, &yours, first).map_err(|e| format!("{}: {e}", path.display()))?;
+    let name =
+        |p: Option<&Path>| p.and_then(Path::file_name).unwrap_or_default().to_string_lossy().into_owned();
+    let script = view.to_script(&format!("{}/{}", name(dir.parent()), name(Some(dir))))?;
+    std::fs::write(dir.join(VIEW_DATA), script).map_err(|e| format!("{}: {e}", dir.display()))
 }
 
 /// Why stage 01's picture (the rays' directions as colours) differs.
@@ -705,6 +768,21 @@ pub fn write_images(dir: &Path, expected: &Image, yours: &Image) -> Result<Image
     })
 }
 
+/// Writes the expected trees of the report's grid of pixels for `file` at `stage`.
+#[cfg(feature = "complete")]
+fn bless_trees(file: &SceneFile, stage: &str, scene: &Scene) -> Result<(), String> {
+    let trees = stages::grid_trees(stage, scene).ok_or_else(|| format!("stage {stage} traces no tree"))?;
+    let grid = crate::view3d::GridTrees {
+        grid: crate::view3d::GRID,
+        width: scene.width,
+        height: scene.height,
+        trees,
+    };
+    let path = trees_snapshot(file, stage);
+    let json = serde_json::to_string(&grid).map_err(|e| e.to_string())?;
+    std::fs::write(&path, json + "\n").map_err(|e| format!("{}: {e}", path.display()))
+}
+
 /// `grader bless`: writes every scene's snapshots (or one lecture's) from
 /// the current code: `S.png` by the scene's stage, `S.final.png` by the
 /// complete tracer (scenes of lectures 01–09), and the geometry images.
@@ -722,10 +800,138 @@ pub fn bless(only: Option<&str>) -> Result<(), String> {
         if file.lecture != FINAL_STAGE {
             render(None)?.save_png(file.snapshot(".final.png")).map_err(error)?;
         }
+        if traces_trees(&file.lecture) {
+            bless_trees(&file, &file.lecture, &scene)?;
+        }
+        if file.lecture != FINAL_STAGE {
+            bless_trees(&file, FINAL_STAGE, &scene)?;
+        }
         render(Some(Aov::Id))?.save_png(file.snapshot(".id.png")).map_err(error)?;
         render(Some(Aov::Depth))?.save_exr(file.snapshot(".depth.exr")).map_err(error)?;
         render(Some(Aov::Normal))?.save_exr(file.snapshot(".normal.exr")).map_err(error)?;
         println!("blessed {}/{}", file.folder, file.name());
     }
     Ok(())
+}
+
+#[cfg(all(test, feature = "complete"))]
+mod tests {
+    use super::*;
+    use crate::view3d::{GridTrees, TreeNode};
+
+    /// Every scene drawn at a stage that traces a ray tree has its blessed trees, of its grid, as
+    /// the reference traces them today. In f32, the precision they are blessed in, equal to the
+    /// last printed digit. In f64 the structure alone (kinds, hit objects, children): its numbers
+    /// are not f32's — 0.06 apart at 10⁴ from the origin (06's far-from-origin, a ray's t of 55
+    /// is 55.690 in f32 and 55.712 in f64), and an area light's samples land elsewhere (06's
+    /// soft-shadows-sphere) — which the pictures' comparison tolerates in its thresholds.
+    #[test]
+    fn every_tree_stage_scene_has_its_current_blessed_trees() {
+        fn same(a: &TreeNode, b: &TreeNode, at: &str) -> Result<(), String> {
+            let (a_json, b_json) = (serde_json::to_value(a).unwrap(), serde_json::to_value(b).unwrap());
+            let f32_build = size_of::<Float>() == 4;
+            let close = |x: &serde_json::Value, y: &serde_json::Value| match (x.as_f64(), y.as_f64()) {
+                (Some(x), Some(y)) => x == y || !f32_build,
+                _ => x == y,
+            };
+            let numbers = |v: &serde_json::Value, key: &str| v.get(key).cloned().unwrap_or_default();
+            for key in ["k", "o", "d", "w", "h"] {
+                let (x, y) = (numbers(&a_json, key), numbers(&b_json, key));
+                let fits = match (x.as_array(), y.as_array()) {
+                    // A hit: the object exactly, its t as a number.
+                    (Some(x), Some(y)) if key == "h" => x[0] == y[0] && close(&x[1], &y[1]),
+                    (Some(x), Some(y)) => x.len() == y.len() && x.iter().zip(y).all(|(x, y)| close(x, y)),
+                    _ => close(&x, &y),
+                };
+                if !fits {
+                    return Err(format!("{at}: {key} blessed {x}, traced {y}"));
+                }
+            }
+            let (ac, bc) =
+                (a_json["c"].as_array().map_or(0, Vec::len), b_json["c"].as_array().map_or(0, Vec::len));
+            if ac != bc {
+                return Err(format!("{at}: {ac} children blessed, {bc} traced"));
+            }
+            let children =
+                |n: &TreeNode| serde_json::to_value(n).unwrap()["c"].as_array().cloned().unwrap_or_default();
+            for (i, (x, y)) in children(a).iter().zip(children(b)).enumerate() {
+                let (x, y): (TreeNode, TreeNode) =
+                    (serde_json::from_value(x.clone()).unwrap(), serde_json::from_value(y).unwrap());
+                same(&x, &y, &format!("{at}/{i}"))?;
+            }
+            Ok(())
+        }
+        let mut checked = 0;
+        let mut wrong = Vec::new();
+        for file in scene_files(None).unwrap() {
+            let scene = raylab::scene::load(&file.scene).unwrap();
+            let stages = [file.lecture.as_str(), FINAL_STAGE];
+            for stage in
+                stages.into_iter().filter(|s| traces_trees(s)).collect::<std::collections::BTreeSet<_>>()
+            {
+                let path = trees_snapshot(&file, stage);
+                let Ok(text) = std::fs::read_to_string(&path) else {
+                    wrong.push(format!("{}: missing (grader bless)", path.display()));
+                    continue;
+                };
+                let blessed: GridTrees = serde_json::from_str(&text).unwrap();
+                let pixels = crate::view3d::grid(scene.width, scene.height);
+                assert_eq!(
+                    (blessed.grid, blessed.width, blessed.height),
+                    (crate::view3d::GRID, scene.width, scene.height)
+                );
+                let traced = stages::grid_trees(stage, &scene).unwrap();
+                assert_eq!(blessed.trees.len(), traced.len(), "{}", path.display());
+                for ((b, t), (x, y)) in blessed.trees.iter().zip(&traced).zip(pixels) {
+                    if let Err(e) = same(b, t, &format!("{} pixel ({x}, {y})", path.display())) {
+                        wrong.push(e);
+                    }
+                }
+                checked += 1;
+            }
+        }
+        // 3 scenes of 08 at stage 08, 5 of 10 at stage 10, 41 of 01–09 at stage 10.
+        assert_eq!(checked, 49);
+        assert!(
+            wrong.is_empty(),
+            "{} trees differ:\n{}",
+            wrong.len(),
+            wrong[..wrong.len().min(20)].join("\n")
+        );
+    }
+
+    /// The report's data for a failed scene of 08 (what `view3d-data.js` holds): the scene, the
+    /// expected and your trees of all 130 grid pixels, and first the pair of the grid pixel
+    /// nearest the first differing one, (150, 70) → (152, 72), whose expected tree is the
+    /// printed tree (`view3d::tests::the_blessed_whitted_trees_are_the_printed_tree` holds its
+    /// snapshot).
+    #[test]
+    fn the_report_s_view_of_a_failed_whitted_holds_the_grid_s_trees() {
+        let file = scene_files(Some("08")).unwrap().into_iter().find(|f| f.name() == "whitted").unwrap();
+        let scene = raylab::scene::load(&file.scene).unwrap();
+        let dir =
+            std::env::temp_dir().join(format!("raylab-view-data-{}", std::process::id())).join("08/whitted");
+        std::fs::create_dir_all(&dir).unwrap();
+        // "Yours": the reference's own trees (a submission's differ in their numbers, not in form).
+        let yours = serde_json::to_string(&stages::grid_trees("08", &scene).unwrap()).unwrap();
+        write_view(&file, "08", &scene, &yours, (150, 70), &dir).unwrap();
+        let script = std::fs::read_to_string(dir.join(VIEW_DATA)).unwrap();
+        let prefix = "(window.raylabViewData = window.raylabViewData || {})[\"08/whitted\"] = ";
+        let data: serde_json::Value =
+            serde_json::from_str(script.strip_prefix(prefix).unwrap().trim_end().trim_end_matches(';'))
+                .unwrap();
+        let printed = stages::pixel_tree("08", &scene, (152, 72)).unwrap();
+        let printed = printed.split_once('\n').unwrap().1;
+        assert_eq!(data["trees"][0]["label"], "expected");
+        assert_eq!(data["trees"][1]["label"], "yours");
+        for tree in data["trees"].as_array().unwrap() {
+            assert_eq!(tree["pixel"], serde_json::json!([152, 72]));
+            assert_eq!(tree["text"].as_str(), Some(printed));
+        }
+        assert_eq!(data["grid"]["step"], 16);
+        assert_eq!(data["grid"]["expected"].as_array().unwrap().len(), 130);
+        assert_eq!(data["grid"]["yours"].as_array().unwrap().len(), 130);
+        assert_eq!(data["objects"].as_array().unwrap().len(), scene.objects.len());
+        let _ = std::fs::remove_dir_all(dir.parent().unwrap().parent().unwrap());
+    }
 }

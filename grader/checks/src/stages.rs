@@ -281,30 +281,45 @@ pub fn scene_settings(scene: &Scene) -> l08_ray_tree::TraceSettings {
 /// 10), as text with the pixel's colour; `None` at the other stages.
 #[allow(unused_variables)]
 pub fn pixel_tree(stage: &str, scene: &Scene, (x, y): (u32, u32)) -> Option<String> {
-    let show = |(color, tree): (Color, l08_tree::Tree)| {
-        format!("colour ({:.3}, {:.3}, {:.3})\n{tree}", color.x, color.y, color.z)
-    };
+    #[cfg(feature = "l08")]
+    {
+        let (color, tree) = traced(stage, scene, &[(x, y)])?.pop()?;
+        Some(format!("colour ({:.3}, {:.3}, {:.3})\n{tree}", color.x, color.y, color.z))
+    }
+    #[cfg(not(feature = "l08"))]
+    None
+}
+
+/// The ray trees of the report's grid of pixels ([`crate::view3d::grid`]) at a stage that traces
+/// one (08 and 10), for its 3D view; `None` at the other stages.
+#[cfg(feature = "l08")]
+pub fn grid_trees(stage: &str, scene: &Scene) -> Option<Vec<crate::view3d::TreeNode>> {
+    let pixels = crate::view3d::grid(scene.width, scene.height);
+    Some(traced(stage, scene, &pixels)?.iter().map(|(_, tree)| tree.into()).collect())
+}
+
+/// The colours and ray trees of `pixels` of `scene` at stage 08 or 10.
+#[cfg(feature = "l08")]
+fn traced(stage: &str, scene: &Scene, pixels: &[(u32, u32)]) -> Option<Vec<(Color, l08_ray_tree::RayTree)>> {
     match stage {
         #[cfg(feature = "complete")]
-        "10" => crate::tracer::pixel_tree(scene, (x, y), &scene_settings(scene)).ok().map(show),
-        #[cfg(feature = "l08")]
+        "10" => crate::tracer::pixel_trees(scene, pixels, &scene_settings(scene)).ok(),
         "08" => {
             let camera = l01_transforms::Camera::from_scene(&scene.camera, scene.width, scene.height).ok()?;
             let objects = l04_quadrics_transforms::BruteForce::new(&scene.objects);
-            let ray = camera.pixel_ray(x, y, scene.width, scene.height);
             let world = l08_ray_tree::World::new(scene, &objects);
-            Some(show(l08_ray_tree::trace_recorded(&world, &ray, &scene_settings(scene))))
+            let settings = scene_settings(scene);
+            let trace = |(x, y): (u32, u32)| {
+                l08_ray_tree::trace_recorded(
+                    &world,
+                    &camera.pixel_ray(x, y, scene.width, scene.height),
+                    &settings,
+                )
+            };
+            Some(pixels.iter().map(|&pixel| trace(pixel)).collect())
         }
         _ => None,
     }
-}
-
-/// The ray tree's type where lecture 08 is built, and a stand-in where it is not.
-mod l08_tree {
-    #[cfg(feature = "l08")]
-    pub type Tree = l08_ray_tree::RayTree;
-    #[cfg(not(feature = "l08"))]
-    pub type Tree = String;
 }
 
 #[cfg(test)]

@@ -72,15 +72,27 @@ pub fn render_scene(
 /// The ray tree of pixel (x, y) of `scene`, and the pixel's colour.
 pub fn pixel_tree(
     scene: &Scene,
-    (x, y): (u32, u32),
+    pixel: (u32, u32),
     settings: &TraceSettings,
 ) -> Result<(Color, RayTree), String> {
-    if x >= scene.width || y >= scene.height {
+    pixel_trees(scene, &[pixel], settings)?.pop().ok_or_else(|| "no pixel".to_owned())
+}
+
+/// [`pixel_tree`] of each of `pixels`, the scene's hierarchy built once.
+pub fn pixel_trees(
+    scene: &Scene,
+    pixels: &[(u32, u32)],
+    settings: &TraceSettings,
+) -> Result<Vec<(Color, RayTree)>, String> {
+    if let Some((x, y)) = pixels.iter().find(|(x, y)| *x >= scene.width || *y >= scene.height) {
         return Err(format!("pixel ({x}, {y}) is outside the {}×{} image", scene.width, scene.height));
     }
     let camera = Camera::from_scene(&scene.camera, scene.width, scene.height).map_err(|e| e.to_string())?;
     let objects = l09_acceleration::intersector_for(&scene.objects);
-    let ray = camera.pixel_ray(x, y, scene.width, scene.height);
     let surface: SurfaceMaterial = &|hit, material| surface_material(scene, hit, material);
-    Ok(trace_recorded(&World::new(scene, objects.as_ref()).with_surface(surface), &ray, settings))
+    let world = World::new(scene, objects.as_ref()).with_surface(surface);
+    Ok(pixels
+        .iter()
+        .map(|&(x, y)| trace_recorded(&world, &camera.pixel_ray(x, y, scene.width, scene.height), settings))
+        .collect())
 }

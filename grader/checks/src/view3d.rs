@@ -13,7 +13,7 @@ use std::fmt::Write as _;
 use l08_ray_tree::{RayKind, RayTree};
 use raylab::scene::{Camera, LightKind, Shape};
 use raylab::{Color, Float, Mat4, Scene, Vec3};
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 /// The drawing code, put into each page whole.
 const SCRIPT: &str = include_str!("../assets/view3d.js");
@@ -33,6 +33,98 @@ pub struct View {
     /// The lights as line segments (x₀ y₀ z₀ x₁ y₁ z₁): a cross at a point, a rect's outline.
     lights: Vec<[f32; 6]>,
     trees: Vec<ViewTree>,
+    /// In the report: the expected and your trees of every grid pixel, for a click to pick from.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    grid: Option<GridPair>,
+    #[serde(skip)]
+    extent: Extent,
+}
+
+/// The trees of the grid's pixels ([`grid`], row by row), as blessed: `S.trees.json` beside the
+/// snapshot `S.png`, `S.final.trees.json` beside `S.final.png`.
+#[derive(Debug, PartialEq, Serialize, Deserialize)]
+pub struct GridTrees {
+    pub grid: u32,
+    pub width: u32,
+    pub height: u32,
+    pub trees: Vec<TreeNode>,
+}
+
+/// A ray tree as data, its numbers as the text tree prints them (three decimals): what the
+/// blessed files hold and what a student's code sends for the report, ~75 bytes a ray in JSON.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct TreeNode {
+    k: Kind,
+    o: [f64; 3],
+    d: [f64; 3],
+    w: f64,
+    /// The object hit (a shadow ray's blocker) and the ray's t.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    h: Option<(usize, f64)>,
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    c: Vec<TreeNode>,
+}
+
+/// A ray's kind in a [`TreeNode`], one letter in JSON.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+enum Kind {
+    #[serde(rename = "e")]
+    Eye,
+    #[serde(rename = "s")]
+    Shadow,
+    #[serde(rename = "r")]
+    Reflected,
+    #[serde(rename = "t")]
+    Transmitted,
+}
+
+impl From<&RayTree> for TreeNode {
+    fn from(tree: &RayTree) -> Self {
+        // The value of its three printed decimals, so that the tree prints the same again (a
+        // zero unsigned: the text never shows its sign).
+        let printed = |x: Float| format!("{x:.3}").parse::<f64>().map_or(f64::NAN, |x| x + 0.0);
+        let v = |v: Vec3| [printed(v.x), printed(v.y), printed(v.z)];
+        TreeNode {
+            k: match tree.kind {
+                RayKind::Eye => Kind::Eye,
+                RayKind::Shadow => Kind::Shadow,
+                RayKind::Reflected => Kind::Reflected,
+                RayKind::Transmitted => Kind::Transmitted,
+            },
+            o: v(tree.origin),
+            d: v(tree.dir),
+            w: printed(tree.weight),
+            h: tree.hit.map(|(object, t)| (object, printed(t))),
+            c: tree.children.iter().map(TreeNode::from).collect(),
+        }
+    }
+}
+
+impl TreeNode {
+    /// The tree again.
+    pub fn to_tree(&self) -> RayTree {
+        let v = |a: [f64; 3]| Vec3::new(a[0] as Float, a[1] as Float, a[2] as Float);
+        RayTree {
+            kind: match self.k {
+                Kind::Eye => RayKind::Eye,
+                Kind::Shadow => RayKind::Shadow,
+                Kind::Reflected => RayKind::Reflected,
+                Kind::Transmitted => RayKind::Transmitted,
+            },
+            origin: v(self.o),
+            dir: v(self.d),
+            hit: self.h.map(|(object, t)| (object, t as Float)),
+            weight: self.w as Float,
+            children: self.c.iter().map(TreeNode::to_tree).collect(),
+        }
+    }
+}
+
+#[derive(Serialize)]
+struct GridPair {
+    step: u32,
+    expected: Vec<ViewTree>,
+    yours: Vec<ViewTree>,
 }
 
 #[derive(Serialize)]
@@ -56,17 +148,26 @@ struct ViewObject {
 }
 
 /// One pixel's tree: its rays as segments, and its text (as `grader render --tree` prints it).
-#[derive(Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct ViewTree {
-    label: String,
-    pixel: [u32; 2],
-    text: String,
+    pub label: String,
+    pub pixel: [u32; 2],
+    pub text: String,
     segments: Vec<Segment>,
 }
 
-#[derive(Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+enum SegmentKind {
+    Eye,
+    Shadow,
+    Reflected,
+    Transmitted,
+}
+
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 struct Segment {
-    kind: &'static str,
+    kind: SegmentKind,
     from: [f32; 3],
     to: [f32; 3],
     weight: f32,
@@ -74,14 +175,56 @@ struct Segment {
     hit: Option<usize>,
 }
 
+/// How large a scene is drawn: the length of a ray that escapes, and the step its coordinates are
+/// rounded to.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Extent {
+    /// Half the diagonal of the scene's bounds (planes aside).
+    radius: Float,
+    /// 10⁻⁴ of the scene's size, a pixel's worth of the view (five digits, not eight: the page's
+    /// weight is its numbers).
+    step: f64,
+}
+
+impl Extent {
+    fn from_bounds(radius: Float) -> Self {
+        Extent { radius, step: 10f64.powf((radius as f64).log10().floor() - 4.0) }
+    }
+}
+
+impl ViewTree {
+    /// The tree of pixel `pixel` under `label` ("yours", "expected"), its segments rounded to the
+    /// scene's step.
+    pub fn new(scene: &Scene, extent: Extent, label: &str, pixel: (u32, u32), tree: &RayTree) -> Self {
+        let mut segments = Vec::new();
+        walk(scene, extent, tree, &mut segments);
+        ViewTree { label: label.to_owned(), pixel: [pixel.0, pixel.1], text: tree.to_string(), segments }
+    }
+}
+
+/// The grid of pixels whose trees the report holds: one pixel, the centre of each `GRID` × `GRID`
+/// block (a click in the report picks the nearest; the first differing pixel is shown by its
+/// block's).
+pub const GRID: u32 = 16;
+
+/// The grid pixel of the block `pixel` lies in.
+pub fn nearest((x, y): (u32, u32), width: u32, height: u32) -> (u32, u32) {
+    let centre = |v: u32, n: u32| ((v / GRID) * GRID + GRID / 2).min(n.saturating_sub(1));
+    (centre(x, width), centre(y, height))
+}
+
+/// The grid's pixels of a `width` × `height` image, row by row.
+pub fn grid(width: u32, height: u32) -> Vec<(u32, u32)> {
+    let along = |n: u32| (0..n.div_ceil(GRID)).map(move |k| (k * GRID + GRID / 2).min(n - 1));
+    along(height).flat_map(|y| along(width).map(move |x| (x, y))).collect()
+}
+
 impl View {
     /// The scene's geometry and lights, with no tree yet.
     pub fn new(scene: &Scene, title: &str) -> Self {
         let solids: Vec<Vec<[Vec3; 3]>> = scene.objects.iter().map(|o| world_triangles(o, None)).collect();
         let (center, radius) = bounds(scene, &solids);
-        // The surfaces to 10⁻⁴ of the scene's size, a pixel's worth of the view (five digits, not
-        // eight: the page's weight is its triangles).
-        let step = 10f64.powf((radius as f64).log10().floor() - 4.0);
+        let step = Extent::from_bounds(radius).step;
         let objects = scene
             .objects
             .iter()
@@ -121,19 +264,64 @@ impl View {
             objects,
             lights: light_marks(scene, radius),
             trees: Vec::new(),
+            grid: None,
+            extent: Extent::from_bounds(radius),
         }
     }
 
     /// Adds the tree of pixel `pixel` under `label` ("yours", "expected").
     pub fn add_tree(&mut self, scene: &Scene, label: &str, pixel: (u32, u32), tree: &RayTree) {
-        let mut segments = Vec::new();
-        walk(scene, self.radius as Float, tree, &mut segments);
-        self.trees.push(ViewTree {
-            label: label.to_owned(),
-            pixel: [pixel.0, pixel.1],
-            text: tree.to_string(),
-            segments,
-        });
+        self.trees.push(ViewTree::new(scene, self.extent, label, pixel, tree));
+    }
+
+    /// The report's view: the expected and your trees of every grid pixel, the pair of the grid
+    /// pixel nearest `shown` drawn first. An error when the trees are not of this scene's grid.
+    pub fn set_grid(
+        &mut self,
+        scene: &Scene,
+        expected: &GridTrees,
+        yours: &[TreeNode],
+        shown: (u32, u32),
+    ) -> Result<(), String> {
+        let pixels = grid(scene.width, scene.height);
+        if (expected.grid, expected.width, expected.height) != (GRID, scene.width, scene.height)
+            || expected.trees.len() != pixels.len()
+            || yours.len() != pixels.len()
+        {
+            return Err(format!(
+                "the blessed trees are of a {}×{} image's grid of {} ({} trees), yours of {} trees; the scene is {}×{}, \
+                 its grid of {GRID} has {} pixels",
+                expected.width,
+                expected.height,
+                expected.grid,
+                expected.trees.len(),
+                yours.len(),
+                scene.width,
+                scene.height,
+                pixels.len()
+            ));
+        }
+        let views = |trees: &[TreeNode], label: &str| -> Vec<ViewTree> {
+            pixels
+                .iter()
+                .zip(trees)
+                .map(|(&p, t)| ViewTree::new(scene, self.extent, label, p, &t.to_tree()))
+                .collect()
+        };
+        let (expected, yours) = (views(&expected.trees, "expected"), views(yours, "yours"));
+        let near = nearest(shown, scene.width, scene.height);
+        let at = |trees: &[ViewTree]| trees.iter().find(|t| t.pixel == [near.0, near.1]).cloned();
+        self.trees = at(&expected).into_iter().chain(at(&yours)).collect();
+        self.grid = Some(GridPair { step: GRID, expected, yours });
+        Ok(())
+    }
+
+    /// The data as a script for the report, which loads it when its view is opened:
+    /// `raylabViewData[key] = {…}`.
+    pub fn to_script(&self, key: &str) -> Result<String, String> {
+        let data = serde_json::to_string(self).map_err(|e| e.to_string())?;
+        let key = serde_json::to_string(key).map_err(|e| e.to_string())?;
+        Ok(format!("(window.raylabViewData = window.raylabViewData || {{}})[{key}] = {data};\n"))
     }
 
     /// The page: the data as JSON and the drawing code, nothing fetched.
@@ -183,28 +371,29 @@ fn shown_color(c: Color) -> [f32; 3] {
 }
 
 /// The segments of `tree` and of every ray below it.
-fn walk(scene: &Scene, escape: Float, tree: &RayTree, out: &mut Vec<Segment>) {
+fn walk(scene: &Scene, extent: Extent, tree: &RayTree, out: &mut Vec<Segment>) {
     let dir = tree.dir.normalize_or_zero();
     let length = match (tree.kind, tree.hit) {
         (_, Some((_, t))) => t * tree.dir.length(),
-        (RayKind::Shadow, None) => reach_light(scene, tree.origin, dir).unwrap_or(escape),
-        (_, None) => escape,
+        (RayKind::Shadow, None) => reach_light(scene, tree.origin, dir).unwrap_or(extent.radius),
+        (_, None) => extent.radius,
     };
     let kind = match tree.kind {
-        RayKind::Eye => "eye",
-        RayKind::Shadow => "shadow",
-        RayKind::Reflected => "reflected",
-        RayKind::Transmitted => "transmitted",
+        RayKind::Eye => SegmentKind::Eye,
+        RayKind::Shadow => SegmentKind::Shadow,
+        RayKind::Reflected => SegmentKind::Reflected,
+        RayKind::Transmitted => SegmentKind::Transmitted,
     };
+    let rounded = |p: Vec3| f32s(p).map(|x| quantized(x as Float, extent.step));
     out.push(Segment {
         kind,
-        from: f32s(tree.origin),
-        to: f32s(tree.origin + length * dir),
+        from: rounded(tree.origin),
+        to: rounded(tree.origin + length * dir),
         weight: tree.weight as f32,
         hit: tree.hit.map(|(object, _)| object),
     });
     for child in &tree.children {
-        walk(scene, escape, child, out);
+        walk(scene, extent, child, out);
     }
 }
 
@@ -440,6 +629,116 @@ mod tests {
         for p in triangles.iter().flatten() {
             let on_face = p.x == 0.0 || p.x == 1.0 || p.y == 0.0 || p.y == 2.0 || p.z == 0.0 || p.z == 3.0;
             assert!(on_face, "{p}");
+        }
+    }
+
+    /// The grid holds the centre of each 16 × 16 block, the last block's clamped into the image;
+    /// `nearest` finds the centre of the block a pixel lies in.
+    #[test]
+    fn the_grid_is_each_block_s_centre_and_nearest_finds_its_block() {
+        let pixels = grid(200, 150);
+        // 200 / 16 = 12.5 → 13 columns, 150 / 16 = 9.4 → 10 rows.
+        assert_eq!(pixels.len(), 13 * 10);
+        assert_eq!(pixels[0], (8, 8));
+        assert_eq!(pixels[1], (24, 8));
+        assert_eq!(pixels[12], (199, 8));
+        assert_eq!(pixels[13], (8, 24));
+        assert_eq!(*pixels.last().unwrap(), (199, 149));
+        assert_eq!(nearest((150, 70), 200, 150), (152, 72));
+        assert_eq!(nearest((0, 0), 200, 150), (8, 8));
+        assert_eq!(nearest((199, 149), 200, 150), (199, 149));
+        assert_eq!(grid(1, 1), vec![(0, 0)]);
+        for &(x, y) in &pixels {
+            assert_eq!(nearest((x, y), 200, 150), (x, y), "a grid pixel is its own block's");
+        }
+    }
+
+    fn node(kind: RayKind, origin: Vec3, dir: Vec3, hit: Option<(usize, Float)>, weight: Float) -> RayTree {
+        RayTree { kind, origin, dir, hit, weight, children: Vec::new() }
+    }
+
+    /// A tree as data prints as the tree did: numbers rounded to three decimals as printed
+    /// (−0.0004 prints 0.000 either way, 2.0006 as 2.001), through JSON and back.
+    #[test]
+    fn a_tree_as_data_prints_as_the_tree() {
+        let mut tree = node(
+            RayKind::Eye,
+            Vec3::new(0.0, 2.2, 6.5),
+            Vec3::new(0.24744, -0.0004, -0.9689),
+            Some((2, 5.6096)),
+            1.0,
+        );
+        let mut inside =
+            node(RayKind::Transmitted, Vec3::new(1.38549, 1.0426, 1.1878), Vec3::Z, Some((2, 2.0006)), 0.9);
+        inside.children.push(node(RayKind::Shadow, Vec3::ONE, Vec3::X, Some((1, 0.836)), 0.9));
+        tree.children = vec![
+            node(RayKind::Shadow, Vec3::ONE, Vec3::Y, None, 1.0),
+            node(RayKind::Reflected, Vec3::ONE, -Vec3::Y, None, 0.1),
+            inside,
+        ];
+        let data = TreeNode::from(&tree);
+        let json = serde_json::to_string(&data).unwrap();
+        let back: TreeNode = serde_json::from_str(&json).unwrap();
+        assert_eq!(back, data);
+        assert_eq!(back.to_tree().to_string(), tree.to_string());
+        assert!(tree.to_string().contains("hits #2 at t = 2.001"), "{tree}");
+        // Empty fields are left out: a ray that misses and has no children is kind, origin, dir, weight.
+        assert_eq!(
+            serde_json::to_string(&data.c[1]).unwrap(),
+            r#"{"k":"r","o":[1.0,1.0,1.0],"d":[0.0,-1.0,0.0],"w":0.1}"#
+        );
+    }
+
+    /// The blessed trees of 08's Whitted scene at grid pixel (152, 72), as the report's view
+    /// holds them: the text of `grader render --tree 152,72` (the snapshot below), read as the
+    /// slides draw it. The eye ray hits the glass ball (#2); its k_r = 0.1 and k_t = 0.9 split
+    /// the weight (0.1, 0.9; inside 0.9·0.1 = 0.09, 0.09·0.9 = 0.081, 0.9·0.9 = 0.81); the ray
+    /// reflected inside crosses a chord as long as the one refracted in (t = 1.358 both: a
+    /// reflection inside a sphere keeps the angle); the shadow ray from the back wall is blocked
+    /// by the ball itself; the way out lands on a tile (#12) in the chrome ball's (#1) shadow.
+    /// Each segment starts at its ray's printed origin and, for a hit, ends at origin + t·dir
+    /// (to 2·10⁻³·(1 + t): the printed origin, direction and t are rounded to 10⁻³).
+    #[test]
+    fn the_blessed_whitted_trees_are_the_printed_tree() {
+        let root = crate::images::workspace_root().join("lectures/08-ray-tree");
+        let scene = raylab::scene::load(root.join("scenes/whitted.toml")).unwrap();
+        let blessed: GridTrees = serde_json::from_str(
+            &std::fs::read_to_string(root.join("snapshots/whitted.trees.json")).unwrap(),
+        )
+        .unwrap();
+        let mut view = View::new(&scene, "whitted");
+        view.set_grid(&scene, &blessed, &blessed.trees, (150, 70)).unwrap();
+        let shown = &view.trees[0];
+        assert_eq!(shown.pixel, [152, 72]);
+        insta::assert_snapshot!(shown.text, @r"
+        eye from (0.000, 2.200, 6.500) dir (0.247, -0.206, -0.947) weight 1.000: hits #2 at t = 5.610
+          shadow from (1.385, 1.042, 1.188) dir (-0.610, 0.689, 0.391) weight 1.000: reaches the light
+          reflected from (1.385, 1.042, 1.188) dir (0.985, 0.162, -0.051) weight 0.100: misses
+          transmitted from (1.385, 1.042, 1.188) dir (-0.104, -0.271, -0.957) weight 0.900: hits #2 at t = 1.358
+            shadow from (1.244, 0.673, -0.111) dir (-0.533, 0.670, 0.517) weight 0.900: blocked by #2 at t = 1.272
+            reflected from (1.244, 0.673, -0.111) dir (-0.834, -0.002, 0.552) weight 0.090: hits #2 at t = 1.358
+              transmitted from (0.112, 0.670, 0.639) dir (-0.596, 0.104, 0.796) weight 0.081: misses
+            transmitted from (1.244, 0.673, -0.111) dir (-0.441, -0.302, -0.845) weight 0.810: hits #12 at t = 2.235
+              shadow from (0.258, -0.002, -2.000) dir (-0.358, 0.660, 0.660) weight 0.810: blocked by #1 at t = 0.836
+        ");
+        // The reference of today traces the same (the blessed file is current).
+        let traced = crate::stages::pixel_tree("08", &scene, (152, 72)).unwrap();
+        assert_eq!(traced.split_once('\n').unwrap().1, shown.text);
+        assert_eq!(shown.segments.len(), shown.text.lines().count(), "a segment per ray");
+        let tree = blessed.trees[grid(200, 150).iter().position(|&p| p == (152, 72)).unwrap()].to_tree();
+        let mut rays = Vec::new();
+        fn flatten<'a>(tree: &'a RayTree, out: &mut Vec<&'a RayTree>) {
+            out.push(tree);
+            tree.children.iter().for_each(|c| flatten(c, out));
+        }
+        flatten(&tree, &mut rays);
+        for (ray, segment) in rays.iter().zip(&shown.segments) {
+            let close =
+                |a: [f32; 3], b: Vec3, within: Float| (0..3).all(|i| (a[i] as Float - b[i]).abs() <= within);
+            assert!(close(segment.from, ray.origin, 1e-3), "{segment:?} {ray:?}");
+            if let Some((_, t)) = ray.hit {
+                assert!(close(segment.to, ray.origin + t * ray.dir, 2e-3 * (1.0 + t)), "{segment:?} {ray:?}");
+            }
         }
     }
 
