@@ -18,9 +18,15 @@ use serde::{Deserialize, Serialize};
 /// The drawing code, put into each page whole.
 const SCRIPT: &str = include_str!("../assets/view3d.js");
 
-/// Slices around a sphere's axis and rings from pole to pole; sides of a cylinder or a cone.
+/// Slices around a sphere's axis (and half as many rings from pole to pole) where the scene has
+/// few spheres; sides of a cylinder or a cone.
 const SLICES: usize = 32;
-const RINGS: usize = 16;
+
+/// The page's weight is its triangles (~60 bytes each): the spheres of a scene are drawn in at
+/// most this many (32, 16 or 8 slices: 06's hundred spheres in 8), and a mesh in at most
+/// [`MESH_TRIANGLES`] (simplified where it has more).
+const SPHERE_TRIANGLES: usize = 8192;
+const MESH_TRIANGLES: usize = 8192;
 
 /// What the page draws.
 #[derive(Serialize)]
@@ -222,7 +228,17 @@ pub fn grid(width: u32, height: u32) -> Vec<(u32, u32)> {
 impl View {
     /// The scene's geometry and lights, with no tree yet.
     pub fn new(scene: &Scene, title: &str) -> Self {
-        let solids: Vec<Vec<[Vec3; 3]>> = scene.objects.iter().map(|o| world_triangles(o, None)).collect();
+        let spheres = scene.objects.iter().filter(|o| matches!(o.shape, Shape::Sphere { .. })).count();
+        let slices =
+            [32, 16, 8].into_iter().find(|&s| spheres * 2 * s * (s / 2 - 1) <= SPHERE_TRIANGLES).unwrap_or(8);
+        let solids: Vec<Vec<[Vec3; 3]>> = scene
+            .objects
+            .iter()
+            .map(|o| match o.shape {
+                Shape::Mesh(_) => simplified(world_triangles(o, None, slices), MESH_TRIANGLES),
+                _ => world_triangles(o, None, slices),
+            })
+            .collect();
         let (center, radius) = bounds(scene, &solids);
         let step = Extent::from_bounds(radius).step;
         let objects = scene
@@ -232,7 +248,7 @@ impl View {
             .enumerate()
             .map(|(index, (object, solid))| {
                 let triangles = if matches!(object.shape, Shape::Plane { .. }) {
-                    world_triangles(object, Some((center, radius)))
+                    world_triangles(object, Some((center, radius)), slices)
                 } else {
                     solid
                 };
@@ -502,11 +518,15 @@ fn bounds(scene: &Scene, solids: &[Vec<[Vec3; 3]>]) -> (Vec3, Float) {
 
 /// An object's triangles in world space. A plane is drawn as a square around the point of it
 /// nearest `around`'s centre, three of its radii across; without `around`, none.
-fn world_triangles(object: &raylab::scene::Object, around: Option<(Vec3, Float)>) -> Vec<[Vec3; 3]> {
+fn world_triangles(
+    object: &raylab::scene::Object,
+    around: Option<(Vec3, Float)>,
+    slices: usize,
+) -> Vec<[Vec3; 3]> {
     let to_world = object.transform.map_or(Mat4::IDENTITY, |t| t.world_from_object);
     let to_object = object.transform.map_or(Mat4::IDENTITY, |t| t.object_from_world);
     let local = match &object.shape {
-        Shape::Sphere { center, radius } => sphere(*center, *radius),
+        Shape::Sphere { center, radius } => sphere(*center, *radius, slices),
         Shape::Plane { normal, offset } => match around {
             Some((center, radius)) => {
                 let c = to_object.transform_point3(center);
@@ -533,9 +553,55 @@ fn quad(c: [Vec3; 4]) -> Vec<[Vec3; 3]> {
     vec![[c[0], c[1], c[2]], [c[0], c[2], c[3]]]
 }
 
-fn sphere(center: Vec3, radius: Float) -> Vec<[Vec3; 3]> {
+/// `triangles` in at most `budget` (give or take a few): as they are when they fit, else their
+/// vertices merged in the cells of a grid (vertex clustering, Rossignac and Borrel 1993), each
+/// cell's at their mean, and the triangles that collapse left out — a coarser grid until they fit.
+fn simplified(triangles: Vec<[Vec3; 3]>, budget: usize) -> Vec<[Vec3; 3]> {
+    use std::collections::{HashMap, HashSet};
+    if triangles.len() <= budget {
+        return triangles;
+    }
+    let min = triangles.iter().flatten().fold(Vec3::splat(Float::INFINITY), |m, p| m.min(*p));
+    let max = triangles.iter().flatten().fold(Vec3::splat(Float::NEG_INFINITY), |m, p| m.max(*p));
+    let size = (max - min).max_element();
+    if !(size.is_finite() && size > 0.0) {
+        return triangles;
+    }
+    // Cells across the largest side: a surface of n triangles has ~n/2 vertices, one per cell
+    // of a grid fine enough; start where the budget's vertices would fill a square's worth.
+    let mut cells = ((budget as f64 / 2.0).sqrt() * 2.0) as Float;
+    loop {
+        let cell = size / cells;
+        let key = |p: Vec3| {
+            let k = ((p - min) / cell).floor();
+            (k.x as i64, k.y as i64, k.z as i64)
+        };
+        let mut means: HashMap<(i64, i64, i64), (Vec3, Float)> = HashMap::new();
+        for p in triangles.iter().flatten() {
+            let entry = means.entry(key(*p)).or_insert((Vec3::ZERO, 0.0));
+            *entry = (entry.0 + *p, entry.1 + 1.0);
+        }
+        let mut seen = HashSet::new();
+        let mut kept = Vec::new();
+        for t in &triangles {
+            let k = t.map(key);
+            let mut sorted = k;
+            sorted.sort();
+            if k[0] != k[1] && k[1] != k[2] && k[0] != k[2] && seen.insert(sorted) {
+                kept.push(k.map(|k| means[&k].0 / means[&k].1));
+            }
+        }
+        if kept.len() <= budget || cells <= 4.0 {
+            return kept;
+        }
+        cells *= 0.8;
+    }
+}
+
+fn sphere(center: Vec3, radius: Float, slices: usize) -> Vec<[Vec3; 3]> {
+    let rings = slices / 2;
     let at = |ring: usize, slice: usize| {
-        let (theta, phi) = (PI * ring as f64 / RINGS as f64, 2.0 * PI * slice as f64 / SLICES as f64);
+        let (theta, phi) = (PI * ring as f64 / rings as f64, 2.0 * PI * slice as f64 / slices as f64);
         center
             + radius
                 * Vec3::new(
@@ -545,14 +611,14 @@ fn sphere(center: Vec3, radius: Float) -> Vec<[Vec3; 3]> {
                 )
     };
     let mut triangles = Vec::new();
-    for ring in 0..RINGS {
-        for slice in 0..SLICES {
+    for ring in 0..rings {
+        for slice in 0..slices {
             let c = [at(ring, slice), at(ring, slice + 1), at(ring + 1, slice + 1), at(ring + 1, slice)];
             // The poles' quads are triangles: leave out the one of zero area.
             if ring > 0 {
                 triangles.push([c[0], c[1], c[2]]);
             }
-            if ring + 1 < RINGS {
+            if ring + 1 < rings {
                 triangles.push([c[0], c[2], c[3]]);
             }
         }
@@ -615,11 +681,29 @@ mod tests {
 
     #[test]
     fn a_sphere_is_closed_and_on_its_surface() {
-        let triangles = sphere(Vec3::new(1.0, 2.0, 3.0), 2.0);
-        assert_eq!(triangles.len(), 2 * SLICES * (RINGS - 1));
+        let triangles = sphere(Vec3::new(1.0, 2.0, 3.0), 2.0, SLICES);
+        assert_eq!(triangles.len(), 2 * SLICES * (SLICES / 2 - 1));
         for p in triangles.iter().flatten() {
             assert!(((*p - Vec3::new(1.0, 2.0, 3.0)).length() - 2.0).abs() < 1e-5, "{p}");
         }
+    }
+
+    /// A sphere of 64 770 triangles (256 slices) simplified to the mesh budget: at most 8192
+    /// triangles, and not far fewer (over a quarter), every vertex still on the sphere within
+    /// the grid's cell (the mean of points on the surface, a chord's depth inside it: a cell of
+    /// the last grid is at most 2/(2·√4096·0.8⁵) ≈ 0.024 of the diameter 2 — allowed 0.05).
+    #[test]
+    fn a_fine_mesh_is_simplified_to_the_budget_and_keeps_its_shape() {
+        let fine = sphere(Vec3::ZERO, 1.0, 256);
+        assert_eq!(fine.len(), 2 * 256 * 127);
+        let coarse = simplified(fine, MESH_TRIANGLES);
+        assert!(coarse.len() <= MESH_TRIANGLES && coarse.len() > MESH_TRIANGLES / 4, "{}", coarse.len());
+        for p in coarse.iter().flatten() {
+            assert!((p.length() - 1.0).abs() < 0.05, "{p}");
+        }
+        // Fewer than the budget: untouched.
+        let few = sphere(Vec3::ZERO, 1.0, 8);
+        assert_eq!(simplified(few.clone(), MESH_TRIANGLES), few);
     }
 
     #[test]
