@@ -30,7 +30,6 @@ mod stages;
 mod tools;
 #[cfg(feature = "complete")]
 mod tracer;
-#[cfg(feature = "l08")]
 mod view3d;
 
 use std::path::{Path, PathBuf};

@@ -152,28 +152,22 @@ pub fn render(lecture: &str, scene: &Scene) -> Result<Image, String> {
             ))
         };
         let headlit: Shade = &|ray, hit| headlight(scene, ray, hit);
-        #[cfg(feature = "l04")]
-        let brute = l04_quadrics_transforms::BruteForce::new(&scene.objects);
-        match lecture {
-            "01" => return Ok(pixels(&sky)),
-            #[cfg(feature = "l02")]
-            "02" => return drawn(&l02_ray_casting::Group::new(&scene.objects), headlit),
-            #[cfg(feature = "l03")]
-            "03" => return drawn(&crate::scene_objects::Lecture03(&scene.objects), headlit),
-            #[cfg(feature = "l04")]
-            "04" => return drawn(&brute, headlit),
-            #[cfg(feature = "l09")]
-            "09" => return drawn(l09_acceleration::intersector_for(&scene.objects).as_ref(), headlit),
+        let objects = intersector(lecture, scene);
+        match (lecture, objects.as_deref()) {
+            ("01", _) => return Ok(pixels(&sky)),
+            ("02" | "03" | "04" | "09", Some(objects)) => return drawn(objects, headlit),
             #[cfg(feature = "l05")]
-            "05" => return drawn(&brute, &|ray, hit| local(scene, ray, hit)),
+            ("05", Some(objects)) => return drawn(objects, &|ray, hit| local(scene, ray, hit)),
             #[cfg(feature = "l06")]
-            "06" => return drawn(&brute, &|ray, hit| shadowed(scene, &brute, ray, hit)),
+            ("06", Some(objects)) => return drawn(objects, &|ray, hit| shadowed(scene, objects, ray, hit)),
             #[cfg(feature = "l07")]
-            "07" => return drawn(&brute, &|ray, hit| mirrored(scene, ray, hit)),
+            ("07", Some(objects)) => return drawn(objects, &|ray, hit| mirrored(scene, ray, hit)),
             #[cfg(feature = "l08")]
-            "08" => return l08_ray_tree::render_scene(scene, &scene_settings(scene)).map(|(image, _)| image),
+            ("08", _) => {
+                return l08_ray_tree::render_scene(scene, &scene_settings(scene)).map(|(image, _)| image);
+            }
             #[cfg(feature = "complete")]
-            "10" => {
+            ("10", _) => {
                 use crate::tracer::{render_scene, scene_sampling};
                 return render_scene(scene, None, &scene_settings(scene), scene_sampling(scene))
                     .map(|(image, _)| image);
@@ -182,6 +176,24 @@ pub fn render(lecture: &str, scene: &Scene) -> Result<Image, String> {
         }
     }
     Err(format!("stage {lecture} is not in this build: its lecture or one it draws with does not compile"))
+}
+
+/// The intersector stage `lecture` finds the closest hits with: 02's group, 03's shapes, 04's
+/// brute force (stages 04–07), 09's choice of hierarchy; `None` at the other stages or where it
+/// is not built.
+#[allow(unused_variables)]
+fn intersector<'a>(lecture: &str, scene: &'a Scene) -> Option<Box<dyn raylab::Intersector + 'a>> {
+    match lecture {
+        #[cfg(feature = "l02")]
+        "02" => Some(Box::new(l02_ray_casting::Group::new(&scene.objects))),
+        #[cfg(feature = "l03")]
+        "03" => Some(Box::new(crate::scene_objects::Lecture03(&scene.objects))),
+        #[cfg(feature = "l04")]
+        "04" | "05" | "06" | "07" => Some(Box::new(l04_quadrics_transforms::BruteForce::new(&scene.objects))),
+        #[cfg(feature = "l09")]
+        "09" => Some(l09_acceleration::intersector_for(&scene.objects)),
+        _ => None,
+    }
 }
 
 /// Stage 05: 05's `shade_local` with the material's own colour, V = −d/|d|.
@@ -245,20 +257,32 @@ fn shadowed(scene: &Scene, objects: &dyn raylab::Intersector, ray: &Ray, hit: &r
 /// into the scene (lecture 08), and there is no Fresnel split.
 #[cfg(feature = "l07")]
 fn mirrored(scene: &Scene, ray: &Ray, hit: &raylab::Hit) -> Color {
-    use l07_reflection_refraction::{interface, mirror_direction, refract};
-    let Some(material) = scene.materials.get(hit.material) else { return scene.background };
     let mut color = local(scene, ray, hit);
+    for (k, direction, _) in sky_rays(scene, ray, hit) {
+        color += k * direction_color(direction);
+    }
+    color
+}
+
+/// Stage 07's rays to the sky from `hit`: (k_r, 07's mirror direction) on a reflective material,
+/// (k_t, 07's refracted direction, or the mirror direction where `refract` finds total internal
+/// reflection) on a transparent one, each with whether it is the transmitted one.
+#[cfg(feature = "l07")]
+fn sky_rays(scene: &Scene, ray: &Ray, hit: &raylab::Hit) -> Vec<(Color, Vec3, bool)> {
+    use l07_reflection_refraction::{interface, mirror_direction, refract};
+    let Some(material) = scene.materials.get(hit.material) else { return Vec::new() };
     let d = ray.dir.normalize();
     let mirror = || mirror_direction(d, hit.normal);
+    let mut rays = Vec::new();
     if material.reflective != raylab::BLACK {
-        color += material.reflective * direction_color(mirror());
+        rays.push((material.reflective, mirror(), false));
     }
     if material.transparent != raylab::BLACK {
         let crossing = interface(hit, material.ior);
         let through = refract(d, crossing.normal, crossing.eta_ratio()).unwrap_or_else(mirror);
-        color += material.transparent * direction_color(through);
+        rays.push((material.transparent, through, true));
     }
-    color
+    rays
 }
 
 /// The tracer's settings for `scene`: what its `[render]` table says, and
@@ -290,12 +314,48 @@ pub fn pixel_tree(stage: &str, scene: &Scene, (x, y): (u32, u32)) -> Option<Stri
     None
 }
 
-/// The ray trees of the report's grid of pixels ([`crate::view3d::grid`]) at a stage that traces
-/// one (08 and 10), for its 3D view; `None` at the other stages.
-#[cfg(feature = "l08")]
+/// The ray trees of the report's grid of pixels ([`crate::view3d::grid`]) for its 3D view: at
+/// stages 08 and 10 the traced trees (lecture 08's), before them the rays the stage draws with —
+/// the camera's ray (01), its closest hit (02–07, 09; stages 05 and 06 shade inside 05's and 06's
+/// functions, which record nothing), and at 07 the mirror and refracted rays to the sky. `None`
+/// where the stage is not built.
+#[allow(unused_variables)]
 pub fn grid_trees(stage: &str, scene: &Scene) -> Option<Vec<crate::view3d::TreeNode>> {
+    use crate::view3d::{Kind, TreeNode};
     let pixels = crate::view3d::grid(scene.width, scene.height);
-    Some(traced(stage, scene, &pixels)?.iter().map(|(_, tree)| tree.into()).collect())
+    #[cfg(feature = "l08")]
+    if matches!(stage, "08" | "10") {
+        return Some(traced(stage, scene, &pixels)?.iter().map(|(_, tree)| tree.into()).collect());
+    }
+    #[cfg(feature = "l01")]
+    {
+        let camera = l01_transforms::Camera::from_scene(&scene.camera, scene.width, scene.height).ok()?;
+        let objects = if stage == "01" { None } else { Some(intersector(stage, scene)?) };
+        let tree = |(x, y): (u32, u32)| {
+            let ray = camera.pixel_ray(x, y, scene.width, scene.height);
+            let hit = objects.as_ref().and_then(|o| o.closest_hit(&ray, raylab::Interval::POSITIVE));
+            #[allow(unused_mut)]
+            let mut children = Vec::new();
+            #[cfg(feature = "l07")]
+            if let (Some(hit), "07") = (&hit, stage) {
+                for (k, direction, through) in sky_rays(scene, &ray, hit) {
+                    let kind = if through { Kind::Transmitted } else { Kind::Reflected };
+                    children.push(TreeNode::new(
+                        kind,
+                        hit.point,
+                        direction,
+                        k.max_element(),
+                        None,
+                        Vec::new(),
+                    ));
+                }
+            }
+            TreeNode::new(Kind::Eye, ray.origin, ray.dir, 1.0, hit.map(|h| (h.object, h.t)), children)
+        };
+        return Some(pixels.into_iter().map(tree).collect());
+    }
+    #[allow(unreachable_code)]
+    None
 }
 
 /// The colours and ray trees of `pixels` of `scene` at stage 08 or 10.

@@ -10,6 +10,7 @@
 use std::f64::consts::PI;
 use std::fmt::Write as _;
 
+#[cfg(feature = "l08")]
 use l08_ray_tree::{RayKind, RayTree};
 use raylab::scene::{Camera, LightKind, Shape};
 use raylab::{Color, Float, Mat4, Scene, Vec3};
@@ -58,6 +59,8 @@ pub struct GridTrees {
 
 /// A ray tree as data, its numbers as the text tree prints them (three decimals): what the
 /// blessed files hold and what a student's code sends for the report, ~75 bytes a ray in JSON.
+/// From stage 08 on, lecture 08's `RayTree` of the pixel; before, the rays the stage draws it
+/// with (`stages::grid_trees`). It prints as `RayTree` does.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct TreeNode {
     k: Kind,
@@ -73,7 +76,7 @@ pub struct TreeNode {
 
 /// A ray's kind in a [`TreeNode`], one letter in JSON.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
-enum Kind {
+pub enum Kind {
     #[serde(rename = "e")]
     Eye,
     #[serde(rename = "s")]
@@ -84,45 +87,77 @@ enum Kind {
     Transmitted,
 }
 
-impl From<&RayTree> for TreeNode {
-    fn from(tree: &RayTree) -> Self {
-        // The value of its three printed decimals, so that the tree prints the same again (a
-        // zero unsigned: the text never shows its sign).
+impl TreeNode {
+    /// A ray and the rays it spawned, its numbers rounded as the text prints them (a zero
+    /// unsigned: the text never shows its sign), so that it prints the same again.
+    pub fn new(
+        kind: Kind,
+        origin: Vec3,
+        dir: Vec3,
+        weight: Float,
+        hit: Option<(usize, Float)>,
+        children: Vec<TreeNode>,
+    ) -> Self {
         let printed = |x: Float| format!("{x:.3}").parse::<f64>().map_or(f64::NAN, |x| x + 0.0);
         let v = |v: Vec3| [printed(v.x), printed(v.y), printed(v.z)];
         TreeNode {
-            k: match tree.kind {
-                RayKind::Eye => Kind::Eye,
-                RayKind::Shadow => Kind::Shadow,
-                RayKind::Reflected => Kind::Reflected,
-                RayKind::Transmitted => Kind::Transmitted,
-            },
-            o: v(tree.origin),
-            d: v(tree.dir),
-            w: printed(tree.weight),
-            h: tree.hit.map(|(object, t)| (object, printed(t))),
-            c: tree.children.iter().map(TreeNode::from).collect(),
+            k: kind,
+            o: v(origin),
+            d: v(dir),
+            w: printed(weight),
+            h: hit.map(|(object, t)| (object, printed(t))),
+            c: children,
         }
+    }
+
+    fn write(&self, f: &mut std::fmt::Formatter<'_>, indent: usize) -> std::fmt::Result {
+        let kind = match self.k {
+            Kind::Eye => "eye",
+            Kind::Shadow => "shadow",
+            Kind::Reflected => "reflected",
+            Kind::Transmitted => "transmitted",
+        };
+        let fixed = |x: f64| {
+            let s = format!("{x:.3}");
+            if s == "-0.000" { "0.000".to_owned() } else { s }
+        };
+        let triple = |v: [f64; 3]| format!("({}, {}, {})", fixed(v[0]), fixed(v[1]), fixed(v[2]));
+        write!(
+            f,
+            "{:indent$}{kind} from {} dir {} weight {}: ",
+            "",
+            triple(self.o),
+            triple(self.d),
+            fixed(self.w)
+        )?;
+        match (self.k, self.h) {
+            (Kind::Shadow, Some((object, t))) => writeln!(f, "blocked by #{object} at t = {}", fixed(t))?,
+            (Kind::Shadow, None) => writeln!(f, "reaches the light")?,
+            (_, Some((object, t))) => writeln!(f, "hits #{object} at t = {}", fixed(t))?,
+            (_, None) => writeln!(f, "misses")?,
+        }
+        self.c.iter().try_for_each(|c| c.write(f, indent + 2))
     }
 }
 
-impl TreeNode {
-    /// The tree again.
-    pub fn to_tree(&self) -> RayTree {
-        let v = |a: [f64; 3]| Vec3::new(a[0] as Float, a[1] as Float, a[2] as Float);
-        RayTree {
-            kind: match self.k {
-                Kind::Eye => RayKind::Eye,
-                Kind::Shadow => RayKind::Shadow,
-                Kind::Reflected => RayKind::Reflected,
-                Kind::Transmitted => RayKind::Transmitted,
-            },
-            origin: v(self.o),
-            dir: v(self.d),
-            hit: self.h.map(|(object, t)| (object, t as Float)),
-            weight: self.w as Float,
-            children: self.c.iter().map(TreeNode::to_tree).collect(),
-        }
+/// As lecture 08's `RayTree` prints (`view3d::tests::a_tree_as_data_prints_as_the_tree`).
+impl std::fmt::Display for TreeNode {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        self.write(f, 0)
+    }
+}
+
+#[cfg(feature = "l08")]
+impl From<&RayTree> for TreeNode {
+    fn from(tree: &RayTree) -> Self {
+        let kind = match tree.kind {
+            RayKind::Eye => Kind::Eye,
+            RayKind::Shadow => Kind::Shadow,
+            RayKind::Reflected => Kind::Reflected,
+            RayKind::Transmitted => Kind::Transmitted,
+        };
+        let children = tree.children.iter().map(TreeNode::from).collect();
+        TreeNode::new(kind, tree.origin, tree.dir, tree.weight, tree.hit, children)
     }
 }
 
@@ -201,7 +236,7 @@ impl Extent {
 impl ViewTree {
     /// The tree of pixel `pixel` under `label` ("yours", "expected"), its segments rounded to the
     /// scene's step.
-    pub fn new(scene: &Scene, extent: Extent, label: &str, pixel: (u32, u32), tree: &RayTree) -> Self {
+    pub fn new(scene: &Scene, extent: Extent, label: &str, pixel: (u32, u32), tree: &TreeNode) -> Self {
         let mut segments = Vec::new();
         walk(scene, extent, tree, &mut segments);
         ViewTree { label: label.to_owned(), pixel: [pixel.0, pixel.1], text: tree.to_string(), segments }
@@ -286,7 +321,7 @@ impl View {
     }
 
     /// Adds the tree of pixel `pixel` under `label` ("yours", "expected").
-    pub fn add_tree(&mut self, scene: &Scene, label: &str, pixel: (u32, u32), tree: &RayTree) {
+    pub fn add_tree(&mut self, scene: &Scene, label: &str, pixel: (u32, u32), tree: &TreeNode) {
         self.trees.push(ViewTree::new(scene, self.extent, label, pixel, tree));
     }
 
@@ -318,11 +353,7 @@ impl View {
             ));
         }
         let views = |trees: &[TreeNode], label: &str| -> Vec<ViewTree> {
-            pixels
-                .iter()
-                .zip(trees)
-                .map(|(&p, t)| ViewTree::new(scene, self.extent, label, p, &t.to_tree()))
-                .collect()
+            pixels.iter().zip(trees).map(|(&p, t)| ViewTree::new(scene, self.extent, label, p, t)).collect()
         };
         let (expected, yours) = (views(&expected.trees, "expected"), views(yours, "yours"));
         let near = nearest(shown, scene.width, scene.height);
@@ -387,39 +418,43 @@ fn shown_color(c: Color) -> [f32; 3] {
 }
 
 /// The segments of `tree` and of every ray below it.
-fn walk(scene: &Scene, extent: Extent, tree: &RayTree, out: &mut Vec<Segment>) {
-    let dir = tree.dir.normalize_or_zero();
-    let length = match (tree.kind, tree.hit) {
-        (_, Some((_, t))) => t * tree.dir.length(),
-        (RayKind::Shadow, None) => reach_light(scene, tree.origin, dir).unwrap_or(extent.radius),
+fn walk(scene: &Scene, extent: Extent, tree: &TreeNode, out: &mut Vec<Segment>) {
+    let v = |a: [f64; 3]| Vec3::new(a[0] as Float, a[1] as Float, a[2] as Float);
+    let (origin, dir) = (v(tree.o), v(tree.d));
+    let unit = dir.normalize_or_zero();
+    let length = match (tree.k, tree.h) {
+        (_, Some((_, t))) => t as Float * dir.length(),
+        (Kind::Shadow, None) => reach_light(scene, origin, unit).unwrap_or(extent.radius),
         (_, None) => extent.radius,
     };
-    let kind = match tree.kind {
-        RayKind::Eye => SegmentKind::Eye,
-        RayKind::Shadow => SegmentKind::Shadow,
-        RayKind::Reflected => SegmentKind::Reflected,
-        RayKind::Transmitted => SegmentKind::Transmitted,
+    let kind = match tree.k {
+        Kind::Eye => SegmentKind::Eye,
+        Kind::Shadow => SegmentKind::Shadow,
+        Kind::Reflected => SegmentKind::Reflected,
+        Kind::Transmitted => SegmentKind::Transmitted,
     };
     let rounded = |p: Vec3| f32s(p).map(|x| quantized(x as Float, extent.step));
     out.push(Segment {
         kind,
-        from: rounded(tree.origin),
-        to: rounded(tree.origin + length * dir),
-        weight: tree.weight as f32,
-        hit: tree.hit.map(|(object, _)| object),
+        from: rounded(origin),
+        to: rounded(origin + length * unit),
+        weight: tree.w as f32,
+        hit: tree.h.map(|(object, _)| object),
     });
-    for child in &tree.children {
+    for child in &tree.c {
         walk(scene, extent, child, out);
     }
 }
 
 /// How far along the unit `dir` from `origin` a shadow ray that saw its light went: to the
 /// nearest light it points at (a point or spot light on the ray; a rect or the disc a ball light
-/// is sampled on, crossed), `None` for a directional light or none found.
+/// is sampled on, crossed), `None` for a directional light or none found. The ray's numbers are
+/// the printed ones (to 5·10⁻⁴ each): "on the ray" allows 2·10⁻³ per unit of distance, and a
+/// rect's or a disc's edge as much.
 fn reach_light(scene: &Scene, origin: Vec3, dir: Vec3) -> Option<Float> {
     let on_ray = |p: Vec3| {
         let t = (p - origin).dot(dir);
-        (t > 0.0 && (origin + t * dir - p).length() <= 1e-3 * t.max(1.0)).then_some(t)
+        (t > 0.0 && (origin + t * dir - p).length() <= 2e-3 * t.max(1.0)).then_some(t)
     };
     scene
         .lights
@@ -436,13 +471,14 @@ fn reach_light(scene: &Scene, origin: Vec3, dir: Vec3) -> Option<Float> {
                     p.dot(edge_v.cross(n)) / edge_u.dot(edge_v.cross(n)),
                     p.dot(edge_u.cross(n)) / edge_v.dot(edge_u.cross(n)),
                 );
-                let inside = (-1e-3..=1.001).contains(&a) && (-1e-3..=1.001).contains(&b);
+                let slack = 2e-3 * t.max(1.0) / edge_u.length().min(edge_v.length());
+                let inside = (-slack..=1.0 + slack).contains(&a) && (-slack..=1.0 + slack).contains(&b);
                 (t.is_finite() && t > 0.0 && inside).then_some(t)
             }
             LightKind::Sphere { center, radius, .. } => {
                 let w = (origin - center).normalize_or_zero();
                 let t = (center - origin).dot(w) / dir.dot(w);
-                let inside = (origin + t * dir - center).length() <= radius * 1.001;
+                let inside = (origin + t * dir - center).length() <= radius * 1.001 + 2e-3 * t.max(1.0);
                 (t.is_finite() && t > 0.0 && inside).then_some(t)
             }
         })
@@ -675,7 +711,7 @@ fn lathe(profile: impl Fn(Float) -> (Float, Float), bottom: bool, top: bool) -> 
     triangles
 }
 
-#[cfg(test)]
+#[cfg(all(test, feature = "complete"))]
 mod tests {
     use super::*;
 
@@ -741,8 +777,8 @@ mod tests {
         RayTree { kind, origin, dir, hit, weight, children: Vec::new() }
     }
 
-    /// A tree as data prints as the tree did: numbers rounded to three decimals as printed
-    /// (−0.0004 prints 0.000 either way, 2.0006 as 2.001), through JSON and back.
+    /// A tree as data prints as lecture 08's `RayTree` prints: numbers rounded to three decimals
+    /// as printed (−0.0004 prints 0.000 either way, 2.0006 as 2.001), through JSON and back.
     #[test]
     fn a_tree_as_data_prints_as_the_tree() {
         let mut tree = node(
@@ -761,10 +797,10 @@ mod tests {
             inside,
         ];
         let data = TreeNode::from(&tree);
+        assert_eq!(data.to_string(), tree.to_string());
         let json = serde_json::to_string(&data).unwrap();
         let back: TreeNode = serde_json::from_str(&json).unwrap();
         assert_eq!(back, data);
-        assert_eq!(back.to_tree().to_string(), tree.to_string());
         assert!(tree.to_string().contains("hits #2 at t = 2.001"), "{tree}");
         // Empty fields are left out: a ray that misses and has no children is kind, origin, dir, weight.
         assert_eq!(
@@ -809,19 +845,26 @@ mod tests {
         let traced = crate::stages::pixel_tree("08", &scene, (152, 72)).unwrap();
         assert_eq!(traced.split_once('\n').unwrap().1, shown.text);
         assert_eq!(shown.segments.len(), shown.text.lines().count(), "a segment per ray");
-        let tree = blessed.trees[grid(200, 150).iter().position(|&p| p == (152, 72)).unwrap()].to_tree();
-        let mut rays = Vec::new();
-        fn flatten<'a>(tree: &'a RayTree, out: &mut Vec<&'a RayTree>) {
-            out.push(tree);
-            tree.children.iter().for_each(|c| flatten(c, out));
-        }
-        flatten(&tree, &mut rays);
-        for (ray, segment) in rays.iter().zip(&shown.segments) {
+        // Each segment read against its line of the text: kind, origin, and for a hit the end.
+        let triple = |line: &str, after: &str| -> Vec3 {
+            let from = line.find(after).unwrap() + after.len() + 1;
+            let v: Vec<Float> = line[from..from + line[from..].find(')').unwrap()]
+                .split(", ")
+                .map(|x| x.parse().unwrap())
+                .collect();
+            Vec3::new(v[0], v[1], v[2])
+        };
+        for (line, segment) in shown.text.lines().zip(&shown.segments) {
+            let kind = serde_json::to_value(segment.kind).unwrap();
+            assert_eq!(kind.as_str(), line.trim_start().split(' ').next(), "{line}");
+            let (origin, dir) = (triple(line, " from "), triple(line, " dir "));
             let close =
                 |a: [f32; 3], b: Vec3, within: Float| (0..3).all(|i| (a[i] as Float - b[i]).abs() <= within);
-            assert!(close(segment.from, ray.origin, 1e-3), "{segment:?} {ray:?}");
-            if let Some((_, t)) = ray.hit {
-                assert!(close(segment.to, ray.origin + t * ray.dir, 2e-3 * (1.0 + t)), "{segment:?} {ray:?}");
+            assert!(close(segment.from, origin, 1e-3), "{line}: {segment:?}");
+            let t = line.rsplit_once(" at t = ").map(|(_, t)| t.parse::<Float>().unwrap());
+            assert_eq!(segment.hit.is_some(), t.is_some(), "{line}");
+            if let Some(t) = t {
+                assert!(close(segment.to, origin + t * dir, 2e-3 * (1.0 + t)), "{line}: {segment:?}");
             }
         }
     }

@@ -268,7 +268,7 @@ pub(crate) fn render_to_file(args: &RenderArgs) -> Result<(), String> {
             let title =
                 format!("the ray tree of pixel ({}, {}) of {}", pixel.0, pixel.1, args.scene.display());
             let mut view = crate::view3d::View::new(&scene, &title);
-            view.add_tree(&scene, "yours", pixel, &tree);
+            view.add_tree(&scene, "yours", pixel, &(&tree).into());
             std::fs::write(file, view.to_html()?).map_err(|e| format!("{}: {e}", file.display()))?;
         }
     }
