@@ -250,7 +250,8 @@ for (const img of document.querySelectorAll('td[data-scene] img')) {
     const scene = cell.dataset.scene;
     const box = document.getElementById('picked');
     box.hidden = false;
-    box.textContent = 'pixel (' + x + ', ' + y + '): cargo run -p grader -- render ' + scene + ' --tree ' + x + ',' + y;
+    box.textContent = 'pixel (' + x + ', ' + y + '): cargo run -p grader -- render ' + scene + ' --tree ' + x + ',' + y +
+      ' (add --view tree.html for its page in 3D)';
     const view = cell.querySelector('details[data-view]');
     if (view) {
       view.open = true;
