@@ -231,7 +231,8 @@ function openView(box, then) {
     box.view = raylabView3d(box.querySelector('.view3d-root'), data);
     const first = data.trees.length > 0 ? data.trees[0].pixel : null;
     if (first) box.querySelector('.picked3d').textContent = 'Pixel (' + first.join(', ') +
-      '), the grid pixel nearest the first that differs. Click the expected or your image to pick another.';
+      '): of the pixels the report holds trees for, the one that differs nearest the first that differs. ' +
+      'Click the expected or your image to pick another.';
     if (then) then(box.view);
   };
   document.head.append(script);

@@ -489,9 +489,10 @@ fn check_image(file: &SceneFile, stage: &str, dir: &Path) -> CheckResult {
         let text = format!("your ray tree of pixel ({x}, {y}), the first that differs: {text}");
         let _ = std::fs::write(dir.join("tree.txt"), text);
     }
-    if let Some(yours) = grid {
+    if let Some(trees) = grid {
         // The report is an aid: without its 3D view the verdict stands, the reason is in the page.
-        if let Err(e) = write_view(file, stage, &scene, &yours, (x, y), dir) {
+        let at = view_pixel(&compared.expected, &yours, (x, y));
+        if let Err(e) = write_view(file, stage, &scene, &trees, at, dir) {
             let _ = std::fs::write(dir.join(VIEW_MISSING), e);
         }
     }
@@ -505,13 +506,30 @@ fn check_image(file: &SceneFile, stage: &str, dir: &Path) -> CheckResult {
     })
 }
 
+/// The grid pixel a failed scene's 3D view opens at: of the grid's pixels that differ (as the
+/// comparison counts a pixel), the one nearest the first differing pixel `first`; where none
+/// does (a difference smaller than a block), the grid pixel of `first`'s block.
+fn view_pixel(expected: &Image, yours: &Image, first: (u32, u32)) -> (u32, u32) {
+    let one = |image: &Image, (x, y): (u32, u32)| Image::from_pixels(1, 1, vec![image.get(x, y)]);
+    let differs = |p: &(u32, u32)| {
+        compare(&one(expected, *p), &one(yours, *p), CHANNEL_THRESHOLD).is_ok_and(|c| c.pixels_over > 0)
+    };
+    let distance =
+        |(x, y): (u32, u32)| (x.abs_diff(first.0) as u64).pow(2) + (y.abs_diff(first.1) as u64).pow(2);
+    crate::view3d::grid(expected.width, expected.height)
+        .into_iter()
+        .filter(differs)
+        .min_by_key(|p| distance(*p))
+        .unwrap_or_else(|| crate::view3d::nearest(first, expected.width, expected.height))
+}
+
 /// The report's 3D view of a failed scene, as a script beside its images (`report.rs` loads it when
 /// the view is opened), or why there is none.
 const VIEW_DATA: &str = "view3d-data.js";
 const VIEW_MISSING: &str = "view3d-missing.txt";
 
 /// Writes [`VIEW_DATA`] into `dir`: the scene's geometry, the blessed expected trees of the grid's
-/// pixels and yours, the pair nearest the first differing pixel `first` drawn first. Its key in
+/// pixels and yours, the pair of the grid pixel nearest `first` drawn first. Its key in
 /// the page is `dir`'s last two parts (`08/whitted`, `10/final-07-glass-spheres`).
 fn write_view(
     file: &SceneFile,
@@ -948,5 +966,25 @@ mod tests {
         println!("the views: {total} bytes; the largest {} bytes, {}", largest.0, largest.1);
         assert!(largest.0 <= 4 << 20, "{} bytes for {}", largest.0, largest.1);
         assert!(total <= 24 << 20, "{total} bytes");
+    }
+
+    /// The view opens at a grid pixel that differs, the nearest to the first differing pixel;
+    /// with none, at the first differing pixel's block. A 32 × 32 image's grid is (8, 8),
+    /// (24, 8), (8, 24), (24, 24).
+    #[test]
+    fn the_view_opens_at_the_differing_grid_pixel_nearest_the_first() {
+        let expected = Image::from_pixels(32, 32, vec![Color::ZERO; 32 * 32]);
+        let mut yours = expected.clone();
+        let mut set = |image: &mut Image, x: u32, y: u32| image.pixels[(y * 32 + x) as usize] = Color::ONE;
+        set(&mut yours, 20, 3);
+        assert_eq!(view_pixel(&expected, &yours, (20, 3)), (24, 8), "no grid pixel differs: the block's");
+        set(&mut yours, 8, 24);
+        set(&mut yours, 24, 24);
+        // (24, 24) is 21 away from (20, 3), (8, 24) 24 away.
+        assert_eq!(view_pixel(&expected, &yours, (20, 3)), (24, 24));
+        // A NaN pixel differs too.
+        let mut nan = expected.clone();
+        nan.pixels[8 * 32 + 8] = Color::splat(Float::NAN);
+        assert_eq!(view_pixel(&expected, &nan, (8, 8)), (8, 8));
     }
 }
