@@ -975,7 +975,7 @@ mod tests {
     fn the_view_opens_at_the_differing_grid_pixel_nearest_the_first() {
         let expected = Image::from_pixels(32, 32, vec![Color::ZERO; 32 * 32]);
         let mut yours = expected.clone();
-        let mut set = |image: &mut Image, x: u32, y: u32| image.pixels[(y * 32 + x) as usize] = Color::ONE;
+        let set = |image: &mut Image, x: u32, y: u32| image.pixels[(y * 32 + x) as usize] = Color::ONE;
         set(&mut yours, 20, 3);
         assert_eq!(view_pixel(&expected, &yours, (20, 3)), (24, 8), "no grid pixel differs: the block's");
         set(&mut yours, 8, 24);
