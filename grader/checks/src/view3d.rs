@@ -61,17 +61,40 @@ pub struct GridTrees {
 /// blessed files hold and what a student's code sends for the report, ~75 bytes a ray in JSON.
 /// From stage 08 on, lecture 08's `RayTree` of the pixel; before, the rays the stage draws it
 /// with (`stages::grid_trees`). It prints as `RayTree` does.
+///
+/// A student's NaN or infinite number is written as JSON's `null` (serde_json's way) and read
+/// back as NaN, so that such a tree still reaches the report (`nullable`).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct TreeNode {
     k: Kind,
+    #[serde(deserialize_with = "nullable::triple")]
     o: [f64; 3],
+    #[serde(deserialize_with = "nullable::triple")]
     d: [f64; 3],
+    #[serde(deserialize_with = "nullable::number")]
     w: f64,
     /// The object hit (a shadow ray's blocker) and the ray's t.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none", deserialize_with = "nullable::hit")]
     h: Option<(usize, f64)>,
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     c: Vec<TreeNode>,
+}
+
+/// Numbers that may be `null` in JSON (a NaN or infinity written by serde_json), read as NaN.
+mod nullable {
+    use serde::{Deserialize, Deserializer};
+
+    pub fn number<'de, D: Deserializer<'de>>(d: D) -> Result<f64, D::Error> {
+        Ok(Option::<f64>::deserialize(d)?.unwrap_or(f64::NAN))
+    }
+
+    pub fn triple<'de, D: Deserializer<'de>>(d: D) -> Result<[f64; 3], D::Error> {
+        Ok(<[Option<f64>; 3]>::deserialize(d)?.map(|x| x.unwrap_or(f64::NAN)))
+    }
+
+    pub fn hit<'de, D: Deserializer<'de>>(d: D) -> Result<Option<(usize, f64)>, D::Error> {
+        Ok(Option::<(usize, Option<f64>)>::deserialize(d)?.map(|(object, t)| (object, t.unwrap_or(f64::NAN))))
+    }
 }
 
 /// A ray's kind in a [`TreeNode`], one letter in JSON.
@@ -802,6 +825,16 @@ mod tests {
         let back: TreeNode = serde_json::from_str(&json).unwrap();
         assert_eq!(back, data);
         assert!(tree.to_string().contains("hits #2 at t = 2.001"), "{tree}");
+        // A student's NaN direction and infinite t reach the report: null in JSON, NaN read back.
+        let broken =
+            node(RayKind::Eye, Vec3::ZERO, Vec3::new(Float::NAN, 0.0, -1.0), Some((0, Float::INFINITY)), 1.0);
+        let json = serde_json::to_string(&TreeNode::from(&broken)).unwrap();
+        assert_eq!(json, r#"{"k":"e","o":[0.0,0.0,0.0],"d":[null,0.0,-1.0],"w":1.0,"h":[0,null]}"#);
+        let back: TreeNode = serde_json::from_str(&json).unwrap();
+        assert_eq!(
+            back.to_string(),
+            "eye from (0.000, 0.000, 0.000) dir (NaN, 0.000, -1.000) weight 1.000: hits #0 at t = NaN\n"
+        );
         // Empty fields are left out: a ray that misses and has no children is kind, origin, dir, weight.
         assert_eq!(
             serde_json::to_string(&data.c[1]).unwrap(),
