@@ -212,15 +212,15 @@ struct ViewObject {
 }
 
 /// One pixel's tree: its rays as segments, and its text (as `grader render --tree` prints it).
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[derive(Clone, Debug, Serialize)]
 pub struct ViewTree {
-    pub label: String,
-    pub pixel: [u32; 2],
-    pub text: String,
+    label: String,
+    pixel: [u32; 2],
+    text: String,
     segments: Vec<Segment>,
 }
 
-#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[derive(Clone, Copy, Debug, Serialize)]
 #[serde(rename_all = "lowercase")]
 enum SegmentKind {
     Eye,
@@ -229,7 +229,7 @@ enum SegmentKind {
     Transmitted,
 }
 
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[derive(Clone, Debug, Serialize)]
 struct Segment {
     kind: SegmentKind,
     from: [f32; 3],
@@ -267,8 +267,8 @@ impl ViewTree {
 }
 
 /// The grid of pixels whose trees the report holds: one pixel, the centre of each `GRID` × `GRID`
-/// block (a click in the report picks the nearest; the first differing pixel is shown by its
-/// block's).
+/// block (a click in the report picks its block's; the view opens at a grid pixel that differs,
+/// `images::view_pixel`).
 pub const GRID: u32 = 16;
 
 /// The grid pixel of the block `pixel` lies in.
