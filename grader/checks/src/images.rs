@@ -782,7 +782,8 @@ pub fn write_images(dir: &Path, expected: &Image, yours: &Image) -> Result<Image
 /// Writes the expected trees of the report's grid of pixels for `file` at `stage`.
 #[cfg(feature = "complete")]
 fn bless_trees(file: &SceneFile, stage: &str, scene: &Scene) -> Result<(), String> {
-    let trees = stages::grid_trees(stage, scene).ok_or_else(|| format!("stage {stage} traces no tree"))?;
+    let trees =
+        stages::grid_trees(stage, scene).ok_or_else(|| format!("stage {stage} is not in this build"))?;
     let grid = crate::view3d::GridTrees {
         grid: crate::view3d::GRID,
         width: scene.width,
@@ -827,8 +828,8 @@ mod tests {
     use super::*;
     use crate::view3d::{GridTrees, TreeNode};
 
-    /// Every scene drawn at a stage that traces a ray tree has its blessed trees, of its grid, as
-    /// the reference traces them today. In f32, the precision they are blessed in, equal to the
+    /// Every scene, at each stage that draws it, has its blessed trees, of its grid, as the
+    /// reference traces them today. In f32, the precision they are blessed in, equal to the
     /// last printed digit. In f64 the structure alone (kinds, hit objects, children): its numbers
     /// are not f32's — 0.06 apart at 10⁴ from the origin (06's far-from-origin, a ray's t of 55
     /// is 55.690 in f32 and 55.712 in f64), and an area light's samples land elsewhere (06's
