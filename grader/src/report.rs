@@ -7,6 +7,11 @@
 use std::fmt::Write;
 use std::path::{Path, PathBuf};
 
+// The script the checks write beside a failed scene's images: its 3D view's data (geometry, and
+// the expected and your ray trees of a grid of pixels), loaded when the view is opened; or the
+// reason there is none.
+use raylab_protocol::{VIEW_DATA, VIEW_MISSING};
+
 use crate::grade::Grade;
 use crate::verdict::{Status, Verdict};
 use crate::workspace::Workspace;
@@ -159,12 +164,6 @@ fn images_row(body: &mut String, ws: &Workspace, v: &Verdict, out: &Path) {
         view_box(&scene_dir, &relative(""))
     );
 }
-
-/// The script the checks write beside a failed scene's images: its 3D view's data (geometry, and
-/// the expected and your ray trees of a grid of pixels), loaded when the view is opened; or the
-/// reason there is none.
-const VIEW_DATA: &str = "view3d-data.js";
-const VIEW_MISSING: &str = "view3d-missing.txt";
 
 /// The 3D view of a failed scene: a box that loads its data when opened (the first is open).
 fn view_box(scene_dir: &Path, relative: &str) -> String {

@@ -20,6 +20,8 @@ use std::path::{Path, PathBuf};
 
 use raylab::compare::compare;
 use raylab::{Color, Float, Image, Scene, Vec3};
+// The report's 3D view of a failed scene, as a script beside its images, or why there is none.
+use raylab_protocol::{VIEW_DATA, VIEW_MISSING};
 
 use crate::check::{CheckResult, Failure, Images, Info, Kind, Meta, fail};
 use crate::judge;
@@ -522,11 +524,6 @@ fn view_pixel(expected: &Image, yours: &Image, first: (u32, u32)) -> (u32, u32) 
         .min_by_key(|p| distance(*p))
         .unwrap_or_else(|| crate::view3d::nearest(first, expected.width, expected.height))
 }
-
-/// The report's 3D view of a failed scene, as a script beside its images (`report.rs` loads it when
-/// the view is opened), or why there is none.
-const VIEW_DATA: &str = "view3d-data.js";
-const VIEW_MISSING: &str = "view3d-missing.txt";
 
 /// Writes [`VIEW_DATA`] into `dir`: the scene's geometry, the blessed expected trees of the grid's
 /// pixels and yours, the pair of the grid pixel nearest `first` drawn first. Its key in

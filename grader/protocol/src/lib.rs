@@ -30,6 +30,11 @@ pub const JUDGE_VERDICT: &str = "verdict ";
 /// before the check did, and how the subject ended is the verdict.
 pub const NO_VERDICT: i32 = 3;
 
+/// What a failed scene's check writes beside its pictures for the report's 3D view (the checks
+/// write it, the driver's report loads it): the view's data as a script, or why there is none.
+pub const VIEW_DATA: &str = "view3d-data.js";
+pub const VIEW_MISSING: &str = "view3d-missing.txt";
+
 /// The kinds of check (ARCHITECTURE.md, "The exercise contract").
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "lowercase")]
