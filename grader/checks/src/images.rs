@@ -823,7 +823,7 @@ pub fn bless(only: Option<&str>) -> Result<(), String> {
 #[cfg(all(test, feature = "complete"))]
 mod tests {
     use super::*;
-    use crate::view3d::{GridTrees, TreeNode};
+    use crate::view3d::GridTrees;
 
     /// Every scene, at each stage that draws it, has its blessed trees, of its grid, as the
     /// reference traces them today. In f32, the precision they are blessed in, equal to the
@@ -833,39 +833,30 @@ mod tests {
     /// soft-shadows-sphere) — which the pictures' comparison tolerates in its thresholds.
     #[test]
     fn every_tree_stage_scene_has_its_current_blessed_trees() {
-        fn same(a: &TreeNode, b: &TreeNode, at: &str) -> Result<(), String> {
-            let (a_json, b_json) = (serde_json::to_value(a).unwrap(), serde_json::to_value(b).unwrap());
-            let f32_build = size_of::<Float>() == 4;
-            let close = |x: &serde_json::Value, y: &serde_json::Value| match (x.as_f64(), y.as_f64()) {
-                (Some(x), Some(y)) => x == y || !f32_build,
-                _ => x == y,
-            };
-            let numbers = |v: &serde_json::Value, key: &str| v.get(key).cloned().unwrap_or_default();
-            for key in ["k", "o", "d", "w", "h"] {
-                let (x, y) = (numbers(&a_json, key), numbers(&b_json, key));
-                let fits = match (x.as_array(), y.as_array()) {
-                    // A hit: the object exactly, its t as a number.
-                    (Some(x), Some(y)) if key == "h" => x[0] == y[0] && close(&x[1], &y[1]),
-                    (Some(x), Some(y)) => x.len() == y.len() && x.iter().zip(y).all(|(x, y)| close(x, y)),
-                    _ => close(&x, &y),
-                };
-                if !fits {
-                    return Err(format!("{at}: {key} blessed {x}, traced {y}"));
+        /// `a` against `b` as JSON values: the same shape and keys, numbers equal in f32 (any in
+        /// f64), a hit's object (`h`'s first number) equal in both.
+        fn same(a: &serde_json::Value, b: &serde_json::Value, at: &str) -> Result<(), String> {
+            use serde_json::Value;
+            let fits = match (a, b) {
+                (Value::Number(x), Value::Number(y)) => size_of::<Float>() == 8 || x.as_f64() == y.as_f64(),
+                (Value::Array(x), Value::Array(y)) if x.len() == y.len() => {
+                    return x
+                        .iter()
+                        .zip(y)
+                        .enumerate()
+                        .try_for_each(|(i, (x, y))| same(x, y, &format!("{at}/{i}")));
                 }
-            }
-            let (ac, bc) =
-                (a_json["c"].as_array().map_or(0, Vec::len), b_json["c"].as_array().map_or(0, Vec::len));
-            if ac != bc {
-                return Err(format!("{at}: {ac} children blessed, {bc} traced"));
-            }
-            let children =
-                |n: &TreeNode| serde_json::to_value(n).unwrap()["c"].as_array().cloned().unwrap_or_default();
-            for (i, (x, y)) in children(a).iter().zip(children(b)).enumerate() {
-                let (x, y): (TreeNode, TreeNode) =
-                    (serde_json::from_value(x.clone()).unwrap(), serde_json::from_value(y).unwrap());
-                same(&x, &y, &format!("{at}/{i}"))?;
-            }
-            Ok(())
+                (Value::Object(x), Value::Object(y)) if x.keys().eq(y.keys()) => {
+                    if let (Some(x), Some(y)) = (x.get("h"), y.get("h"))
+                        && x[0] != y[0]
+                    {
+                        return Err(format!("{at}: h blessed {x}, traced {y}"));
+                    }
+                    return x.iter().try_for_each(|(key, x)| same(x, &y[key], &format!("{at}.{key}")));
+                }
+                _ => a == b,
+            };
+            if fits { Ok(()) } else { Err(format!("{at}: blessed {a}, traced {b}")) }
         }
         let mut checked = 0;
         let mut wrong = Vec::new();
@@ -886,7 +877,8 @@ mod tests {
                 let traced = stages::grid_trees(stage, &scene).unwrap();
                 assert_eq!(blessed.trees.len(), traced.len(), "{}", path.display());
                 for ((b, t), (x, y)) in blessed.trees.iter().zip(&traced).zip(pixels) {
-                    if let Err(e) = same(b, t, &format!("{} pixel ({x}, {y})", path.display())) {
+                    let (b, t) = (serde_json::to_value(b).unwrap(), serde_json::to_value(t).unwrap());
+                    if let Err(e) = same(&b, &t, &format!("{} pixel ({x}, {y})", path.display())) {
                         wrong.push(e);
                     }
                 }
