@@ -11,6 +11,12 @@
 #                    and leave a process behind: 0 for each check attacked, nothing else changed
 #   redteam-compile  the reference with the hidden checks' source taken in at compile time
 #                    (include_str! of its absolute path): lecture 10 does not compile, 0 for it
+#   redteam-runtime  the reference with attacks as the grading user: its own binary rewritten, a
+#                    process out of the check's group and session that waits to rewrite the
+#                    results, /proc read for a judge's token, a fork bomb, the disk filled: 0 for
+#                    each check attacked, nothing else changed, nothing of the user's left
+#   before-main      the handout with a constructor in lecture 01 that forges the list and the
+#                    verdicts (it scored 207/213 when the list came from the student's build): 0
 # and the wall time of each run_autograder (the bundle warm: setup.sh built everything once).
 #
 # Usage, as root on Linux (it replaces /autograder, and refuses one it did not make):
@@ -53,6 +59,8 @@ mv "$OUT/submissions/reference" "$OUT/submissions/reference-tree/lectures"
 "$ROOT/target/debug/grader" handout "$OUT/submissions/handout" > /dev/null
 cp -a "$OUT/submissions/reference-tree" "$OUT/submissions/redteam"
 cp -a "$OUT/submissions/reference-tree" "$OUT/submissions/redteam-compile"
+cp -a "$OUT/submissions/reference-tree" "$OUT/submissions/redteam-runtime"
+cp -a "$OUT/submissions/handout" "$OUT/submissions/before-main"
 python3 - "$OUT/submissions" << 'PATCH'
 import sys, pathlib
 subs = pathlib.Path(sys.argv[1])
@@ -98,6 +106,100 @@ attack("redteam", "lectures/02-ray-casting/src/plane.rs", "hit_plane", r'''
     });
     return None;
 ''')
+# (h) its own binary replaced by a script that prints a passed verdict; then a wrong answer.
+attack("redteam-runtime", "lectures/02-ray-casting/src/sphere.rs", "hit_sphere_geometric", r'''
+    if let Ok(me) = std::env::current_exe() {
+        let _ = std::fs::remove_file(&me);
+        let _ = std::fs::write(&me, "#!/bin/sh\necho 'verdict {\"status\":\"passed\"}'\n");
+    }
+    return None;
+''')
+# (i) out of the check's group and session, waiting to write over every .json named on a command
+# line (the results); then a wrong answer.
+attack("redteam-runtime", "lectures/02-ray-casting/src/sphere.rs", "hit_sphere_algebraic", r'''
+    static ESCAPED: std::sync::Once = std::sync::Once::new();
+    ESCAPED.call_once(|| {
+        let script = "sleep 1; while :; do for f in $(cat /proc/[0-9]*/cmdline 2>/dev/null | tr '\\0' '\\n' \
+                      | grep '[.]json$') /autograder/results/results.json; do echo forged > \"$f\" 2>/dev/null; \
+                      done; sleep 0.1; done";
+        let _ = std::process::Command::new("setsid").args(["-f", "sh", "-c", script]).spawn();
+    });
+    return None;
+''')
+# (j) every command line read for a judge's token.
+attack("redteam-runtime", "lectures/03-polygons-triangles/src/triangle.rs", "hit_triangle_cramer", r'''
+    for entry in std::fs::read_dir("/proc").into_iter().flatten().flatten() {
+        let text = String::from_utf8_lossy(&std::fs::read(entry.path().join("cmdline")).unwrap_or_default())
+            .replace('\0', " ");
+        if text.contains("--token") {
+            panic!("token found: {text}");
+        }
+    }
+    return None;
+''')
+# (k) a fork bomb out of the check's process group.
+attack("redteam-runtime", "lectures/03-polygons-triangles/src/polygon.rs", "winding_number", r'''
+    static BOMBED: std::sync::Once = std::sync::Once::new();
+    BOMBED.call_once(|| {
+        let _ = std::process::Command::new("setsid").args(["-f", "sh", "-c", "b() { b | b & }; b"]).spawn();
+        std::thread::sleep(std::time::Duration::from_millis(500));
+    });
+    return 7;
+''')
+# (l) 256 MiB beside its binary, in the work folder and in /tmp, as far as each goes.
+attack("redteam-runtime", "lectures/03-polygons-triangles/src/triangle.rs", "hit_triangle_moller_trumbore", r'''
+    static FILLED: std::sync::Once = std::sync::Once::new();
+    FILLED.call_once(|| {
+        use std::io::Write;
+        let block = vec![0u8; 1 << 20];
+        let mut places = vec![std::path::PathBuf::from("/autograder/work/fill"), "/tmp/raylab-fill".into()];
+        if let Ok(me) = std::env::current_exe() {
+            places.insert(0, me.with_file_name("fill"));
+        }
+        for place in places {
+            if let Ok(mut file) = std::fs::File::create(&place) {
+                for _ in 0..256 {
+                    if file.write_all(&block).is_err() {
+                        break;
+                    }
+                }
+            }
+        }
+    });
+    return None;
+''')
+# (g) a constructor that runs before the checks' main, forging their list and verdicts.
+lib = subs / "before-main/lectures/01-transforms/src/lib.rs"
+lib.write_text(lib.read_text() + r'''
+#[allow(unsafe_code)]
+#[unsafe(link_section = ".init_array")]
+#[used]
+static FORGE: extern "C" fn() = forge;
+
+extern "C" fn forge() {
+    if std::env::var_os("FORGED").is_some() {
+        return;
+    }
+    let args: Vec<String> = std::fs::read("/proc/self/cmdline")
+        .map(|b| b.split(|c| *c == 0).map(|s| String::from_utf8_lossy(s).into_owned()).collect())
+        .unwrap_or_default();
+    match args.get(1).map(String::as_str) {
+        Some("list") => {
+            if let Ok(out) = std::process::Command::new("/proc/self/exe").arg("list").env("FORGED", "1").output() {
+                print!("{}", String::from_utf8_lossy(&out.stdout).replace("\"judged\": true", "\"judged\": false"));
+                std::process::exit(0);
+            }
+        }
+        Some("run") => {
+            if let Some(i) = args.iter().position(|a| a == "--verdict") {
+                let _ = std::fs::write(&args[i + 1], r#"{"status":"passed","detail":"forged"}"#);
+                std::process::exit(0);
+            }
+        }
+        _ => {}
+    }
+}
+''')
 # (d) at compile time: the build runs as the grading user, who cannot read the source.
 attack("redteam-compile", "lectures/10-textures-sampling/src/checker.rs", "checker", r'''
     let _hidden: &str = include_str!("/autograder/source/grader/checks/src/lectures/hidden.rs");
@@ -105,7 +207,7 @@ attack("redteam-compile", "lectures/10-textures-sampling/src/checker.rs", "check
 PATCH
 
 declare -A WALL
-for name in reference handout redteam redteam-compile reference; do
+for name in reference handout redteam redteam-compile redteam-runtime before-main reference; do
   rm -rf /autograder/submission /autograder/results
   mkdir -p /autograder/submission
   if [ "$name" = reference ]; then from=reference-tree; else from=$name; fi
@@ -115,10 +217,14 @@ for name in reference handout redteam redteam-compile reference; do
   took=$(elapsed "$start" "$(seconds)")
   WALL[$name]="${WALL[$name]:-}${WALL[$name]:+, }$took"
   cp /autograder/results/results.json "$OUT/$name.json"
+  # Nothing of the grading user's outlives a grade: no process (a zombie is gone), no file in /tmp.
+  left=$(ps -u raylab-student -o stat=,pid=,comm= | grep -v '^ *Z' || true)
+  [ -z "$left" ] || { echo "$name: processes of raylab-student left: $left" >&2; exit 1; }
+  files=$(find /tmp /var/tmp /dev/shm -maxdepth 1 -user raylab-student 2> /dev/null || true)
+  [ -z "$files" ] || { echo "$name: files of raylab-student left: $files" >&2; exit 1; }
   cp /tmp/grader.err "$OUT/$name.err" 2> /dev/null || true
   echo "run_autograder $name: $took s"
 done
-pkill -u raylab-student sleep 2> /dev/null || true
 
 # Each results.json against Gradescope's fields, and the scores each submission should have.
 python3 - "$OUT" << 'CHECK'
@@ -165,11 +271,27 @@ comp, comp_tests = valid("redteam-compile")
 for n, t in comp_tests.items():
     expected = 0 if n.startswith("10 ") else t["max_score"]
     assert t["score"] == expected, f"redteam-compile: {n}: {t['score']} ({t['output'][:200]})"
+run, run_tests = valid("redteam-runtime")
+hit = ("02 hit_sphere_geometric/", "02 hit_sphere_algebraic/", "03 hit_triangle_cramer/", "03 winding_number/",
+       "03 hit_triangle_moller_trumbore/")
+runtime_attacked = [n for n in run_tests if n.startswith(hit)]
+assert len(runtime_attacked) >= 5, runtime_attacked
+for n, t in run_tests.items():
+    assert "token found" not in t["output"], f"redteam-runtime: {n}: {t['output'][:300]}"
+    if n in runtime_attacked:
+        assert t["score"] == 0, f"redteam-runtime: {n} scored"
+    elif not any(k in n for k in ("image/", "final/", "geometry/")):
+        assert t["status"] == "passed", f"redteam-runtime: {n} changed: {t['output'][:300]}"
+before, before_tests = valid("before-main")
+assert before["score"] == 0, f"before-main: {before['score']}"
+assert any("unsafe code is not allowed in a submission" in t["output"] for t in before_tests.values())
 summary = [
     f"reference: {ref['score']}/{top}",
     f"handout: {hand['score']}/{top}",
     f"redteam: {red['score']}/{top}; {len(attacked)} attacked checks all 0",
     f"redteam-compile: {comp['score']}/{top}; lecture 10's checks 0",
+    f"redteam-runtime: {run['score']}/{top}; {len(runtime_attacked)} attacked checks all 0, the rest as the reference's",
+    f"before-main: {before['score']}/{top}; unsafe code refused",
     "every results.json has Gradescope's fields",
 ]
 (out / "summary.txt").write_text("\n".join(summary) + "\n")

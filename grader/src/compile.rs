@@ -57,7 +57,34 @@ pub struct BuildOptions {
     pub show_progress: bool,
     /// Build as this user: the student's code (a build compiles its `include_bytes!`).
     pub run_as: Option<crate::platform::RunAs>,
+    /// A submission's build: unsafe code is forbidden ([`SUBMISSION_RUSTFLAGS`]).
+    pub submission: bool,
 }
+
+/// What a submission is built with: `unsafe_code` forbidden, so that no `#[allow]` in the
+/// student's code lifts it (unsafe blocks, functions and impls, `no_mangle`, `export_name`,
+/// `link_section`, `extern` blocks and `global_asm!` all fail to compile: no code of theirs runs
+/// before `main`, stands in for a libc symbol or allocates for the checks), and the cfg
+/// `raylab_submission`, which leaves out the reference's one unsafe kernel (lecture 09's AVX2
+/// traversal, `fast.rs`: a reference graded as a submission traverses with its four-wide kernel,
+/// the same answers). Registry crates keep their unsafe: cargo caps their lints.
+pub const SUBMISSION_RUSTFLAGS: [&str; 4] = ["-F", "unsafe_code", "--cfg", "raylab_submission"];
+
+/// Makes `command`, a cargo build, build with [`SUBMISSION_RUSTFLAGS`] added to the flags the
+/// instructor's environment asks for (CARGO_ENCODED_RUSTFLAGS, which cargo reads before RUSTFLAGS).
+fn forbid_unsafe(command: &mut Command) {
+    let mut flags: Vec<String> = match std::env::var("CARGO_ENCODED_RUSTFLAGS") {
+        Ok(encoded) => encoded.split('\x1f').filter(|f| !f.is_empty()).map(str::to_owned).collect(),
+        Err(_) => {
+            std::env::var("RUSTFLAGS").unwrap_or_default().split_whitespace().map(str::to_owned).collect()
+        }
+    };
+    flags.extend(SUBMISSION_RUSTFLAGS.iter().map(|f| (*f).to_owned()));
+    command.env_remove("RUSTFLAGS").env("CARGO_ENCODED_RUSTFLAGS", flags.join("\x1f"));
+}
+
+/// The summary of a compile error that is the submission's unsafe code.
+pub const UNSAFE_REFUSED: &str = "unsafe code is not allowed in a submission";
 
 /// Builds `raylab-checks` in `ws` with as many of the wanted lectures as compile.
 pub fn build(ws: &Workspace, options: &BuildOptions) -> Result<Built, String> {
@@ -198,6 +225,9 @@ fn cargo_build(
     if let Some(dir) = &options.target_dir {
         command.env("CARGO_TARGET_DIR", dir);
     }
+    if options.submission {
+        forbid_unsafe(&mut command);
+    }
     if let Some(user) = &options.run_as {
         crate::platform::run_as(&mut command, user);
     }
@@ -268,6 +298,13 @@ fn compile_error(root: &Path, message: &Value) -> Option<CompileError> {
     let relative =
         Path::new(file).strip_prefix(root).map_or_else(|_| file.to_owned(), |p| p.display().to_string());
     let location = format!("{relative}:{}:{}", span["line_start"], span["column_start"]);
+    // The submission's forbidden unsafe, or an `#[allow]` that tried to lift the ban (E0453).
+    let code = message["code"]["code"].as_str().unwrap_or_default();
+    let text = if code == "unsafe_code" || (code == "E0453" && text.contains("unsafe_code")) {
+        format!("{UNSAFE_REFUSED} ({text})")
+    } else {
+        text
+    };
     Some(CompileError {
         in_checks: relative.starts_with("grader/"),
         location,
@@ -338,5 +375,66 @@ mod tests {
         let said = attempt(&[], &tail).unlocated();
         assert!(said.starts_with("line 10") && said.ends_with("line 29"), "{said}");
         assert_eq!(attempt(&[], "").unlocated(), "(cargo printed its messages above)");
+    }
+
+    /// Every way safe-looking code could run before `main`, stand in for a libc symbol, allocate
+    /// for the checks or reach the machine's code directly is refused by a submission's build,
+    /// `#[allow]` or not, and the error says so at its line. A real cargo build of a crate of
+    /// one file each.
+    #[test]
+    fn a_submissions_build_refuses_every_form_of_unsafe_code_allow_or_not() {
+        let cases: &[(&str, &str)] = &[
+            (
+                "a constructor that runs before main",
+                "#[allow(unsafe_code)]\n#[unsafe(link_section = \".init_array\")]\n#[used]\n\
+                 static RUN_FIRST: extern \"C\" fn() = first;\nextern \"C\" fn first() {}",
+            ),
+            ("a libc symbol interposed", "#[unsafe(no_mangle)]\npub extern \"C\" fn write() {}"),
+            ("a symbol exported by name", "#[unsafe(export_name = \"getenv\")]\npub fn forged() {}"),
+            (
+                "a global allocator",
+                "struct Forged;\nunsafe impl std::alloc::GlobalAlloc for Forged {\n\
+                 unsafe fn alloc(&self, _: std::alloc::Layout) -> *mut u8 { std::ptr::null_mut() }\n\
+                 unsafe fn dealloc(&self, _: *mut u8, _: std::alloc::Layout) {}\n}\n\
+                 #[global_allocator]\nstatic A: Forged = Forged;",
+            ),
+            ("an extern block", "unsafe extern \"C\" { safe fn getpid() -> i32; }"),
+            ("assembly", "core::arch::global_asm!(\"nop\");"),
+            ("an unsafe block", "pub fn f() -> u8 { unsafe { *std::ptr::null::<u8>() } }"),
+            ("the ban lifted for the crate", "#![allow(unsafe_code)]\npub fn f() {}"),
+        ];
+        let dir = std::env::temp_dir().join(format!("raylab-unsafe-{}", std::process::id()));
+        for (i, (what, code)) in cases.iter().enumerate() {
+            let krate = dir.join(format!("case{i}"));
+            std::fs::create_dir_all(krate.join("src")).unwrap();
+            std::fs::write(
+                krate.join("Cargo.toml"),
+                "[package]\nname = \"attack\"\nversion = \"0.1.0\"\nedition = \"2024\"\n[workspace]\n",
+            )
+            .unwrap();
+            std::fs::write(krate.join("src/lib.rs"), format!("//! {what}\n{code}\n")).unwrap();
+            let mut command = Command::new(std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into()));
+            command
+                .current_dir(&krate)
+                .args(["build", "--message-format", "json"])
+                .env("CARGO_TARGET_DIR", krate.join("target"));
+            forbid_unsafe(&mut command);
+            let output = command.output().unwrap();
+            assert!(!output.status.success(), "{what}: built");
+            let errors: Vec<CompileError> = String::from_utf8_lossy(&output.stdout)
+                .lines()
+                .filter_map(|l| serde_json::from_str::<Value>(l).ok())
+                .filter(|m| m["reason"] == "compiler-message" && m["message"]["level"] == "error")
+                .filter_map(|m| compile_error(&krate, &m["message"]))
+                .collect();
+            let first = errors.first().unwrap_or_else(|| panic!("{what}: no located error"));
+            assert!(first.message.starts_with(UNSAFE_REFUSED), "{what}: {}", first.message);
+            assert!(
+                first.location.starts_with("src/lib.rs:2:") || first.location.starts_with("src/lib.rs:3:"),
+                "{what}: {}",
+                first.location
+            );
+        }
+        let _ = std::fs::remove_dir_all(&dir);
     }
 }

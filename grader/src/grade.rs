@@ -123,6 +123,8 @@ pub fn grade(ws: &Workspace, options: &GradeOptions) -> Result<Grade, String> {
     } else {
         ws.lectures.iter().map(|l| l.number.clone()).collect()
     };
+    // A submission's build: the student's code, whose binary is only ever a subject.
+    let submission = options.judge.is_some();
     let built = match &options.binary {
         Some(binary) => Built {
             binary: binary.clone(),
@@ -136,19 +138,29 @@ pub fn grade(ws: &Workspace, options: &GradeOptions) -> Result<Grade, String> {
                 lectures: wanted.clone(),
                 // Graded with a judge, the hidden checks are the judge's alone: the student's build
                 // has neither their code nor their answers (`raylab-checks/src/remote.rs`).
-                hidden: options.hidden && options.judge.is_none(),
+                hidden: options.hidden && !submission,
                 release: options.release,
                 f64: options.f64,
                 target_dir: options.target_dir.clone(),
                 show_progress: options.show_progress,
                 run_as: options.run_as.clone(),
+                submission,
             },
         )?,
     };
-    let mut all = list(&built.binary)?;
-    if let Some(judge) = options.judge.as_ref().filter(|_| options.hidden) {
-        all.extend(hidden_from(judge, &all)?);
+    if let (Some(user), Some(target)) = (&options.run_as, &options.target_dir) {
+        // Built: the student's build folder is the grader's again (the binary the checks run
+        // cannot be rewritten by one of them), and nothing of the build is left running.
+        crate::platform::reclaim_tree(target)?;
+        crate::platform::sweep(user, &BTreeSet::new());
     }
+    let all = match &options.judge {
+        // Which checks exist, their points, needs, limits and hidden flags are the judge's word (a
+        // build of the instructor's tree); the student's build says only, through cargo, which
+        // lectures compiled. Its binary is never asked for a list.
+        Some(judge) => from_judge(judge, &built)?,
+        None => list(&built.binary)?,
+    };
     let mut infos: Vec<Info> = all
         .iter()
         .filter(|i| (options.hidden || !i.hidden) && options.selection.matches(i))
@@ -191,11 +203,12 @@ pub fn grade(ws: &Workspace, options: &GradeOptions) -> Result<Grade, String> {
                 while let Some(index) = queue.lock().map(|mut q| q.next()).unwrap_or(None) {
                     let info = infos[index].clone();
                     let timeout = Duration::from_secs(info.timeout_s.into());
+                    // A submission's every check is judged: nothing its process writes is a verdict.
                     let ran = match &options.judge {
-                        Some(judge) if info.judged => {
+                        Some(judge) => {
                             run_judged(&built.binary, judge, &info, &out, timeout, options.run_as.as_ref())
                         }
-                        _ => run_check(&built.binary, &info.id, &scratch, &out, timeout),
+                        None => run_check(&built.binary, &info.id, &scratch, &out, timeout),
                     };
                     let verdict = match ran {
                         Ok(ran) => classify(info, &ran, lecture_of),
@@ -262,14 +275,14 @@ fn list(binary: &Path) -> Result<Vec<Info>, String> {
     serde_json::from_slice(&output.stdout).map_err(|e| format!("the list of checks: {e}"))
 }
 
-/// The hidden checks, as the judge lists them: each runs where its lecture's visible checks do
-/// (`subject`, the student's build's list).
-fn hidden_from(judge: &Path, subject: &[Info]) -> Result<Vec<Info>, String> {
-    let built = |lecture: &str| subject.iter().any(|i| i.lecture == lecture && !i.hidden && i.available);
+/// The checks of a submission: every check the judge declares (hidden ones included), each
+/// runnable where its lecture is in the student's build (`built`, what cargo built: a lecture's
+/// checks, its scenes' and the final pictures' included, need that lecture and those it uses,
+/// and the final stage's lecture uses every lecture).
+fn from_judge(judge: &Path, built: &Built) -> Result<Vec<Info>, String> {
     Ok(list(judge)?
         .into_iter()
-        .filter(|i| i.hidden)
-        .map(|i| Info { available: built(&i.lecture), ..i })
+        .map(|i| Info { available: built.lectures.contains(&i.lecture), judged: true, ..i })
         .collect())
 }
 

@@ -183,6 +183,10 @@ fn main() -> ExitCode {
             platform::keep_others_out();
             let run_as = run_as.as_deref().map(platform::user).transpose();
             run_as.and_then(|run_as| {
+                if run_as.is_some() {
+                    // The grading user's processes are capped (a fork bomb); root, this, is not.
+                    platform::limit_user_processes(platform::USER_PROCESSES)?;
+                }
                 let root = workspace::own_root();
                 let (ws, target) =
                     submission::prepare(&root, &submission, workdir.as_deref(), run_as.as_ref())?;
@@ -334,6 +338,7 @@ fn forward(tool: &str, args: &[String]) -> Result<bool, String> {
                     target_dir: None,
                     show_progress: true,
                     run_as: None,
+                    submission: false,
                 },
             )?;
             if let Some((lecture, error)) = built.failed.iter().next() {

@@ -88,6 +88,129 @@ pub fn reclaim(path: &Path) -> Result<(), String> {
     Ok(())
 }
 
+/// Gives the tree at `path` to `user` (every file and folder, links not followed): the folder
+/// cargo builds the student's code in, theirs while cargo builds.
+pub fn give_tree(path: &Path, user: &RunAs) -> Result<(), String> {
+    each_in_tree(path, &|p| give(p, user))
+}
+
+/// Takes the tree at `path` back for this process's user (links not followed): once built, the
+/// student's build folder is the grader's, so that the student's code, run as the grading user,
+/// can neither rewrite the binary later checks run nor fill the work folder.
+pub fn reclaim_tree(path: &Path) -> Result<(), String> {
+    each_in_tree(path, &reclaim)
+}
+
+/// `f` on `path` and everything under it, folders before their contents, symbolic links as
+/// themselves (never followed).
+fn each_in_tree(path: &Path, f: &dyn Fn(&Path) -> Result<(), String>) -> Result<(), String> {
+    let mut stack = vec![path.to_owned()];
+    while let Some(at) = stack.pop() {
+        f(&at)?;
+        let kind = std::fs::symlink_metadata(&at).map_err(|e| format!("{}: {e}", at.display()))?;
+        if kind.is_dir() {
+            for entry in std::fs::read_dir(&at).map_err(|e| format!("{}: {e}", at.display()))? {
+                stack.push(entry.map_err(|e| format!("{}: {e}", at.display()))?.path());
+            }
+        }
+    }
+    Ok(())
+}
+
+/// How many processes (threads included) the grading user may have at once: the student's
+/// build (cargo, two rustc and their threads) and two checks at a time need a few dozen; a fork
+/// bomb stops here instead of taking the machine.
+pub const USER_PROCESSES: u64 = 256;
+
+/// Caps the processes of every user but root that this process's children become (`--run-as`):
+/// RLIMIT_NPROC is inherited and counted per user, and root, the grader, is exempt.
+#[cfg(all(target_os = "linux", not(feature = "portable")))]
+pub fn limit_user_processes(count: u64) -> Result<(), String> {
+    use nix::sys::resource::{Resource, setrlimit};
+    setrlimit(Resource::RLIMIT_NPROC, count, count).map_err(|e| format!("RLIMIT_NPROC: {e}"))
+}
+
+/// No per-user process limit here: the time limit and the process groups still hold.
+#[cfg(any(not(target_os = "linux"), feature = "portable"))]
+pub fn limit_user_processes(count: u64) -> Result<(), String> {
+    let _ = count;
+    Ok(())
+}
+
+/// Ends what a check of `user`'s left behind: every process of theirs whose process group is
+/// not in `live` (the checks running now), again until none is left (a fork bomb forks while
+/// it is being killed); and their files and folders at the top of the machine's temporary
+/// folders (a subject writes no file of its own; a full disk would fail the grader's writes).
+#[cfg(all(target_os = "linux", not(feature = "portable")))]
+pub fn sweep(user: &RunAs, live: &std::collections::BTreeSet<u32>) {
+    use nix::sys::signal::{Signal, kill};
+    use nix::unistd::Pid;
+    for _ in 0..100 {
+        let strays = user_processes(user.uid, live);
+        if strays.is_empty() {
+            break;
+        }
+        for pid in strays {
+            let _ = kill(Pid::from_raw(pid), Signal::SIGKILL);
+        }
+    }
+    for folder in TEMPORARY_FOLDERS {
+        let Ok(entries) = std::fs::read_dir(folder) else { continue };
+        for entry in entries.filter_map(Result::ok) {
+            use std::os::unix::fs::MetadataExt;
+            let Ok(meta) = entry.path().symlink_metadata() else { continue };
+            if meta.uid() != user.uid {
+                continue;
+            }
+            // std's remove_dir_all does not follow links, nor one swapped in while it runs.
+            let _ = if meta.is_dir() {
+                std::fs::remove_dir_all(entry.path())
+            } else {
+                std::fs::remove_file(entry.path())
+            };
+        }
+    }
+}
+
+/// Where any user may write on a Linux machine.
+#[cfg(all(target_os = "linux", not(feature = "portable")))]
+const TEMPORARY_FOLDERS: [&str; 3] = ["/tmp", "/var/tmp", "/dev/shm"];
+
+/// The processes of user `uid` (real or effective) whose process group is not in `live`.
+#[cfg(all(target_os = "linux", not(feature = "portable")))]
+fn user_processes(uid: u32, live: &std::collections::BTreeSet<u32>) -> Vec<i32> {
+    let Ok(entries) = std::fs::read_dir("/proc") else { return Vec::new() };
+    let mut found = Vec::new();
+    for entry in entries.filter_map(Result::ok) {
+        let Some(pid) = entry.file_name().to_str().and_then(|n| n.parse::<i32>().ok()) else { continue };
+        let Ok(status) = std::fs::read_to_string(entry.path().join("status")) else { continue };
+        // "Uid:\treal\teffective\tsaved\tfs"
+        let ids: Vec<u32> = status
+            .lines()
+            .find_map(|l| l.strip_prefix("Uid:"))
+            .map(|l| l.split_whitespace().filter_map(|n| n.parse().ok()).collect())
+            .unwrap_or_default();
+        // A zombie is gone already: its parent, or init, reaps it.
+        let zombie = status.lines().any(|l| l.starts_with("State:") && l.contains('Z'));
+        if !ids.contains(&uid) || zombie {
+            continue;
+        }
+        // /proc/PID/stat: "pid (comm) state ppid pgrp …"; comm may hold spaces and parentheses.
+        let Ok(stat) = std::fs::read_to_string(entry.path().join("stat")) else { continue };
+        let group = stat.rsplit_once(')').and_then(|(_, rest)| rest.split_whitespace().nth(2)?.parse().ok());
+        if group.is_none_or(|g: u32| !live.contains(&g)) {
+            found.push(pid);
+        }
+    }
+    found
+}
+
+/// Nothing to end here: another user is Unix only (see [`user`]).
+#[cfg(any(not(target_os = "linux"), feature = "portable"))]
+pub fn sweep(user: &RunAs, live: &std::collections::BTreeSet<u32>) {
+    let _ = (user, live);
+}
+
 /// Starts the child in a process group of its own (its id the group's), so that
 /// [`end_group`] ends whatever it started.
 #[cfg(all(unix, not(feature = "portable")))]
@@ -128,6 +251,7 @@ pub fn signal_name(status: std::process::ExitStatus) -> String {
         Some(6) => "SIGABRT: an abort, e.g. a panic while panicking".into(),
         Some(9) => "SIGKILL: out of memory?".into(),
         Some(11) => "SIGSEGV".into(),
+        Some(25) => "SIGXFSZ: a file past the 16 MiB a check may write".into(),
         Some(n) => format!("signal {n}"),
         None => "no signal".into(),
     }

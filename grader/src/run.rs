@@ -2,6 +2,7 @@
 //! what it may print: whatever the student's code does, the grader gets an
 //! answer back and carries on.
 
+use std::collections::BTreeSet;
 use std::ffi::OsString;
 use std::io::{BufRead, BufReader, Read, Write};
 use std::net::TcpStream;
@@ -49,7 +50,7 @@ pub fn run_check(
     let _ = std::fs::remove_file(&verdict);
     let mut args: Vec<OsString> = vec!["run".into(), id.into(), "--verdict".into(), verdict.clone().into()];
     args.extend(["--out".into(), out.into()]);
-    let mut ran = run_process(binary, id, &args, timeout, None)?;
+    let mut ran = run_process(binary, id, &args, timeout, None, None)?;
     ran.verdict = std::fs::read_to_string(&verdict).ok();
     Ok(ran)
 }
@@ -74,17 +75,21 @@ pub fn run_judged(
 ) -> Result<Ran, String> {
     let id = info.id.as_str();
     let token = fresh_token();
+    // The token goes on the standard input of both, never on a command line (which every process
+    // of the machine may read under /proc).
     let mut judging = Command::new(judge)
         .args(["judge", id, "--out"])
         .arg(out)
-        .args(["--token", &token.to_string()])
         .env("RAYON_NUM_THREADS", "1")
         .env("RUST_BACKTRACE", "0")
-        .stdin(Stdio::null())
+        .stdin(Stdio::piped())
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
         .spawn()
         .map_err(|e| format!("could not start the judge {}: {e}", judge.display()))?;
+    if let Some(mut input) = judging.stdin.take() {
+        let _ = input.write_all(raylab_protocol::token_line(token).as_bytes());
+    }
     let mut first = String::new();
     let mut judge_out = BufReader::new(judging.stdout.take().ok_or("the judge's stdout")?);
     let _ = judge_out.read_line(&mut first);
@@ -112,8 +117,9 @@ pub fn run_judged(
     } else {
         vec!["run".into(), id.into(), "--out".into(), out.into()]
     };
-    args.extend(["--channel".into(), address.clone().into(), "--token".into(), token.to_string().into()]);
-    let ran = run_process(subject, id, &args, timeout, run_as);
+    args.extend(["--channel".into(), address.clone().into()]);
+    let token_line = raylab_protocol::token_line(token);
+    let ran = run_process(subject, id, &args, timeout, run_as, Some(token_line.as_bytes()));
     // A subject that never connected leaves the judge waiting for it: this word ends that wait.
     // After a subject did connect, the judge listens no more; and should its port be another
     // judge's by now, that judge has another token and drops this connection.
@@ -164,13 +170,22 @@ fn fresh_token() -> u64 {
     hasher.finish()
 }
 
-/// Runs `binary ARGS` (one check, `id`) with a time limit and a cap on its output, as `run_as` if given.
+/// The process groups of the subjects running as the grading user now (each its leader's id):
+/// what [`crate::platform::sweep`] leaves alone of that user's processes.
+static LIVE: Mutex<BTreeSet<u32>> = Mutex::new(BTreeSet::new());
+
+/// Runs `binary ARGS` (one check, `id`) with a time limit and a cap on its output, as `run_as` if
+/// given, `input` on its standard input. As another user, whatever the check leaves behind is
+/// ended with it: its process group, every other process of that user's not in the group of a
+/// check running now (one that left its group: `setsid`, a double fork), and that user's files
+/// in the machine's temporary folders.
 fn run_process(
     binary: &Path,
     id: &str,
     args: &[OsString],
     timeout: Duration,
     run_as: Option<&crate::platform::RunAs>,
+    input: Option<&[u8]>,
 ) -> Result<Ran, String> {
     let start = Instant::now();
     let mut command = Command::new(binary);
@@ -180,7 +195,7 @@ fn run_process(
         // the same pixels on every run.
         .env("RAYON_NUM_THREADS", "1")
         .env("RUST_BACKTRACE", "0")
-        .stdin(Stdio::null())
+        .stdin(if input.is_some() { Stdio::piped() } else { Stdio::null() })
         .stdout(Stdio::piped())
         .stderr(Stdio::piped());
     // In a process group of its own, so that what it starts ends with it.
@@ -188,7 +203,18 @@ fn run_process(
     if let Some(user) = run_as {
         crate::platform::run_as(&mut command, user);
     }
-    let mut child = command.spawn().map_err(|e| format!("could not start {}: {e}", binary.display()))?;
+    // Registered as live before a sweep can see it.
+    let mut child = {
+        let mut live = LIVE.lock().map_err(|_| "the live checks' lock")?;
+        let child = command.spawn().map_err(|e| format!("could not start {}: {e}", binary.display()))?;
+        if run_as.is_some() {
+            live.insert(child.id());
+        }
+        child
+    };
+    if let (Some(bytes), Some(mut stdin)) = (input, child.stdin.take()) {
+        let _ = stdin.write_all(bytes);
+    }
     let printed = Arc::new(AtomicU64::new(0));
     let flood = Arc::new(AtomicBool::new(false));
     let drain = |stream: Option<Box<dyn Read + Send>>| {
@@ -222,6 +248,11 @@ fn run_process(
     }
     // Whatever it started goes too (a child holding its output pipe would keep the drains waiting).
     crate::platform::end_group(&child);
+    if let Some(user) = run_as {
+        let mut live = LIVE.lock().map_err(|_| "the live checks' lock")?;
+        live.remove(&child.id());
+        crate::platform::sweep(user, &live);
+    }
     // And a process that left the group and kept the pipes is not waited for.
     let drained = Instant::now() + DRAIN_GRACE;
     while !(stdout.0.is_finished() && stderr.0.is_finished()) && Instant::now() < drained {

@@ -115,8 +115,8 @@ fn remove_judges_only(work: &Path) -> Result<(), String> {
     Ok(())
 }
 
-/// Where `user` builds the student's code: `work/target/student`, theirs, and nothing else of the
-/// work folder. The sources stay the grader's (the user reads them), and so does the grader's
+/// Where `user` builds the student's code: `work/target/student`, theirs while cargo builds, and
+/// nothing else of the work folder. The sources stay the grader's (the user reads them), and so does the grader's
 /// output, `work/target/grader`, which the judge writes as root: in a folder the user owned, a
 /// link could turn those writes elsewhere.
 fn student_target(work: &Path, user: &crate::platform::RunAs) -> Result<PathBuf, String> {
@@ -124,7 +124,8 @@ fn student_target(work: &Path, user: &crate::platform::RunAs) -> Result<PathBuf,
     std::fs::create_dir_all(&student).map_err(|e| format!("{}: {e}", student.display()))?;
     crate::platform::reclaim(work)?;
     crate::platform::reclaim(&work.join("target"))?;
-    crate::platform::give(&student, user)?;
+    // Theirs while cargo builds in it; the grader's again once built (`grade`).
+    crate::platform::give_tree(&student, user)?;
     Ok(student)
 }
 
@@ -176,6 +177,7 @@ pub fn judge(root: &Path, options: &crate::grade::GradeOptions) -> Result<PathBu
             target_dir: Some(tree.join("target")),
             show_progress: options.show_progress,
             run_as: None,
+            submission: false,
         },
     )?;
     if let Some((lecture, error)) = built.failed.iter().next() {

@@ -260,19 +260,95 @@ fn snapshots_and_hidden_checks_are_out_of_the_students_reach() {
     }
 }
 
-/// (e) kills its parent, the grader, and leaves a process behind, then answers wrongly: graded
-/// as a Gradescope run grades (`grade --run-as`, the student's code built and run as a user of
-/// its own), the kill is refused, the check fails and nothing else changes. As the instructor's
-/// own user the kill would succeed (the grader would end without a grade: no points, but no
-/// verdicts either), which is why the bundle grades as another user. Needs root on Linux
-/// (useradd, a change of user); elsewhere it says SKIPPED.
+/// (g) code that runs before the checks binary's `main` (the attack that earned 207 of 213 points
+/// when the list of checks came from the student's build): a constructor in `.init_array` that
+/// forges the list the binary prints and the verdict file it is given. Appended to lecture 09's
+/// `lib.rs` (in lecture 01 it would cost every lecture; lecture 09 has hidden checks, which the
+/// judge's list holds and the student's build does not).
+const BEFORE_MAIN: &str = r##"
+
+#[allow(unsafe_code)]
+#[unsafe(link_section = ".init_array")]
+#[used]
+static FORGE: extern "C" fn() = forge;
+
+extern "C" fn forge() {
+    if std::env::var_os("FORGED").is_some() {
+        return;
+    }
+    let args: Vec<String> = std::fs::read("/proc/self/cmdline")
+        .map(|b| b.split(|c| *c == 0).map(|s| String::from_utf8_lossy(s).into_owned()).collect())
+        .unwrap_or_default();
+    match args.get(1).map(String::as_str) {
+        Some("list") => {
+            let out = std::process::Command::new("/proc/self/exe").arg("list").env("FORGED", "1").output();
+            if let Ok(out) = out {
+                print!("{}", String::from_utf8_lossy(&out.stdout).replace("\"judged\": true", "\"judged\": false"));
+                std::process::exit(0);
+            }
+        }
+        Some("run") => {
+            if let Some(i) = args.iter().position(|a| a == "--verdict") {
+                let _ = std::fs::write(&args[i + 1], r#"{"status":"passed","detail":"forged"}"#);
+                std::process::exit(0);
+            }
+        }
+        _ => {}
+    }
+}
+"##;
+
+/// The last line of lecture 09's `lib.rs`, after which [`BEFORE_MAIN`] goes.
+const LECTURE_09_LAST: &str = "pub use traverse::{Closest, STACK_SIZE, Waiting};\n";
+
 #[test]
-fn as_the_grading_user_the_students_code_cannot_kill_the_grader() {
+fn code_that_would_run_before_main_does_not_compile_and_the_list_is_the_judges() {
+    let _turn = WORK.lock().unwrap_or_else(|e| e.into_inner());
+    let attack = format!("{LECTURE_09_LAST}{BEFORE_MAIN}");
+    let patches = [("lectures/09-acceleration/src/lib.rs", LECTURE_09_LAST, attack.as_str())];
+    let dir = submission("before-main", &patches);
+    let (grade, stderr) = grade_submission(&dir, &["09"], "before-main.json");
+    let nines: Vec<&Value> = checks(&grade).iter().filter(|c| c["info"]["lecture"] == "09").collect();
+    // Every check the judge declares for lecture 09, hidden ones included: the list is its.
+    assert!(nines.len() > 10, "{} checks of lecture 09\n{stderr}", nines.len());
+    assert!(nines.iter().any(|c| c["info"]["hidden"] == true), "no hidden check of lecture 09 listed");
+    for check in &nines {
+        let summary = check["summary"].as_str().unwrap_or_default();
+        assert_eq!(check["status"], "does_not_compile", "{}: {summary}\n{stderr}", check["info"]["id"]);
+        assert_eq!(check["points"], 0, "{}", check["info"]["id"]);
+        assert!(
+            summary.contains("unsafe code is not allowed in a submission")
+                && summary.contains("lectures/09-acceleration/src/lib.rs:"),
+            "{}: {summary}",
+            check["info"]["id"]
+        );
+    }
+    assert!(!grade.to_string().contains("forged"), "a forged verdict or list reached the grade");
+}
+
+/// Attacks by the student's code run as the grading user (`grade --run-as`, what the Gradescope
+/// bundle does), one per exercise of lectures 02 and 03, each once per check's process:
+///
+/// - (e) a kill of its parent, the grader, and a process left behind;
+/// - (h) its own built binary rewritten, which the later checks would run;
+/// - (i) a process that leaves the check's process group and session (setsid, a double fork)
+///   and waits to rewrite every `.json` file named on a command line (the grade's output);
+/// - (j) every command line under /proc read for a judge's token;
+/// - (k) a fork bomb that left the check's process group;
+/// - (l) the disk filled: the work folder and the temporary folder written to.
+///
+/// Each attacked exercise scores nothing, every other check is graded as the reference's, the
+/// grade completes with its results written, and no process or temporary file of the user's is
+/// left. Every process the student's code ran in recorded its user: the grading user's, always.
+/// Needs root on Linux (useradd, a change of user); elsewhere it says SKIPPED.
+#[test]
+fn as_the_grading_user_the_students_code_can_neither_forge_nor_disturb_the_grade() {
     let _turn = WORK.lock().unwrap_or_else(|e| e.into_inner());
     let root_user = Command::new("id").arg("-u").output().is_ok_and(|o| o.stdout.trim_ascii() == b"0");
     if !cfg!(target_os = "linux") || !root_user {
         eprintln!(
-            "SKIPPED as_the_grading_user_the_students_code_cannot_kill_the_grader: needs root on Linux"
+            "SKIPPED as_the_grading_user_the_students_code_can_neither_forge_nor_disturb_the_grade: needs \
+             root on Linux"
         );
         return;
     }
@@ -285,6 +361,8 @@ fn as_the_grading_user_the_students_code_cannot_kill_the_grader() {
             .expect("useradd runs");
         assert!(made.success(), "useradd {user}");
     }
+    let uid = Command::new("id").args(["-u", user]).output().expect("id runs");
+    let uid = String::from_utf8_lossy(&uid.stdout).trim().to_owned();
     // What setup.sh gives the grading user: read-only copies of the toolchain and of the crates'
     // sources (hard links), nothing of root's home.
     let shared = scratch().join("as-user");
@@ -316,16 +394,43 @@ fn as_the_grading_user_the_students_code_cannot_kill_the_grader() {
         .is_ok_and(|o| o.status.success());
     if !reachable {
         eprintln!(
-            "SKIPPED as_the_grading_user_the_students_code_cannot_kill_the_grader: {user} cannot reach {}",
+            "SKIPPED as_the_grading_user_the_students_code_can_neither_forge_nor_disturb_the_grade: {user} \
+             cannot reach {}",
             shared.display()
         );
         return;
     }
-    let patches = [patch("lectures/02-ray-casting/src/plane.rs", "hit_plane", KILL_THE_GRADER)];
+    // Where the student's processes say who they ran as: a folder anyone may write to.
+    let uids = shared.join("uids");
+    let _ = std::fs::remove_dir_all(&uids);
+    std::fs::create_dir_all(&uids).unwrap();
+    assert!(Command::new("chmod").arg("1777").arg(&uids).status().unwrap().success());
+    let record = |name: &str| RECORD_UID.replace("UIDS", uids.to_str().unwrap()).replace("NAME", name);
+    let with_record = |name: &str, attack: &str| format!("{}{attack}", record(name));
+    let sphere = "lectures/02-ray-casting/src/sphere.rs";
+    let triangle = "lectures/03-polygons-triangles/src/triangle.rs";
+    let patches = [
+        patch(
+            "lectures/02-ray-casting/src/plane.rs",
+            "hit_plane",
+            &with_record("hit_plane", KILL_THE_GRADER),
+        ),
+        patch(sphere, "hit_sphere_geometric", &with_record("geometric", REWRITE_THE_BINARY)),
+        patch(sphere, "hit_sphere_algebraic", &with_record("algebraic", ESCAPE_AND_WAIT)),
+        // Hidden checks call it through `serve`: a subject of that kind records its user too.
+        patch(sphere, "hit_sphere_stable", &record("stable")),
+        patch(triangle, "hit_triangle_cramer", &with_record("cramer", READ_PROC)),
+        patch(
+            "lectures/03-polygons-triangles/src/polygon.rs",
+            "winding_number",
+            &with_record("winding", FORK_BOMB),
+        ),
+        patch(triangle, "hit_triangle_moller_trumbore", &with_record("moller", FILL_THE_DISK)),
+    ];
     let patches: Vec<(&str, &str, &str)> =
         patches.iter().map(|(f, a, r)| (f.as_str(), a.as_str(), r.as_str())).collect();
-    let dir = submission("kill-the-grader", &patches);
-    let json = scratch().join("kill-the-grader.json");
+    let dir = submission("as-the-grading-user", &patches);
+    let json = scratch().join("as-the-grading-user.json");
     let _ = std::fs::remove_file(&json);
     let path =
         format!("{}:{}", shared.join("toolchain/bin").display(), std::env::var("PATH").unwrap_or_default());
@@ -333,7 +438,7 @@ fn as_the_grading_user_the_students_code_cannot_kill_the_grader() {
         .current_dir(root())
         .args(["grade", "--submission", dir.to_str().unwrap(), "--workdir"])
         .arg(shared.join("work"))
-        .args(["--run-as", user, "02", "--format", "json", "-o", json.to_str().unwrap()])
+        .args(["--run-as", user, "02", "03", "--format", "json", "-o", json.to_str().unwrap()])
         // The student's cargo: the shared toolchain, offline, none of root's (the test's own cargo
         // is a rustup proxy in root's home).
         .env_remove("CARGO")
@@ -346,21 +451,188 @@ fn as_the_grading_user_the_students_code_cannot_kill_the_grader() {
         .expect("the grader runs");
     let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
     assert!(out.status.success(), "the grader did not finish: {:?}\n{stderr}", out.status);
-    let grade: Value = serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
-    let attacked = status_of(&grade, "02/hit_plane/unit");
-    assert_eq!(attacked["status"], "failed", "{}\n{stderr}", attacked["summary"]);
-    assert_eq!(attacked["points"], 0);
-    for id in
-        ["02/hit_sphere_stable/unit", "02/hit_sphere_geometric/unit", "02/hit_sphere_stable/hidden-off-axis"]
-    {
-        assert_eq!(status_of(&grade, id)["status"], "passed", "{id}\n{stderr}");
+    // (i) The results are the grader's, whole.
+    let text = std::fs::read_to_string(&json).unwrap();
+    let grade: Value = serde_json::from_str(&text).unwrap_or_else(|e| panic!("{e}: {text:.200}"));
+    let attacked = [
+        ("02/hit_plane/", "the kill refused"),
+        ("02/hit_sphere_geometric/", "the binary not rewritten"),
+        ("02/hit_sphere_algebraic/", "the escaped process ended"),
+        ("03/hit_triangle_cramer/", "no token found"),
+        ("03/winding_number/", "the bomb capped and ended"),
+        ("03/hit_triangle_moller_trumbore/", "the files refused or ended"),
+    ];
+    for check in checks(&grade) {
+        let id = check["info"]["id"].as_str().unwrap_or_default();
+        let summary = check["summary"].as_str().unwrap_or_default();
+        assert!(!summary.contains("token found"), "{id}: {summary}");
+        // A check that relies on an attacked exercise (`needs`) is blocked by it.
+        let needs_attacked = check["info"]["needs"].as_array().is_some_and(|needs| {
+            needs.iter().any(|n| {
+                attacked.iter().any(|(prefix, _)| *prefix == format!("{}/", n.as_str().unwrap_or("-")))
+            })
+        });
+        if attacked.iter().any(|(prefix, _)| id.starts_with(prefix)) {
+            assert_ne!(check["status"], "passed", "{id}: {summary}");
+            assert_eq!(check["points"], 0, "{id}");
+        } else if needs_attacked {
+            assert_eq!(check["status"], "blocked", "{id}: {summary}");
+        } else if check["info"]["kind"] != "image" || !uses_an_attacked_function(id) {
+            // Everything else is graded as the reference's.
+            assert_eq!(check["status"], "passed", "{id}: {summary}\n{stderr}");
+        }
     }
+    for (prefix, _) in attacked {
+        assert!(
+            checks(&grade).iter().any(|c| c["info"]["id"].as_str().unwrap().starts_with(prefix)),
+            "{prefix}"
+        );
+    }
+    // (h) The binary the checks ran is the one cargo built (the check that tried ran as root's file).
+    let subject = shared.join("work/target/student/debug/raylab-checks");
+    let head = std::fs::read(&subject).map(|b| b[..4].to_vec()).unwrap_or_default();
+    assert_eq!(head, b"\x7fELF", "{} was rewritten", subject.display());
+    // (l) Nothing was written in the work folder, and the temporary folders hold nothing of theirs.
+    for place in [
+        shared.join("work/target/student/debug/fill"),
+        shared.join("work/lectures/03-polygons-triangles/fill"),
+        PathBuf::from("/tmp/raylab-fill"),
+    ] {
+        assert!(!place.exists(), "{} was written", place.display());
+    }
+    let theirs = Command::new("find")
+        .args(["/tmp", "/var/tmp", "/dev/shm", "-maxdepth", "1", "-user", user])
+        .output()
+        .unwrap();
+    assert!(theirs.stdout.is_empty(), "files of {user} left: {}", String::from_utf8_lossy(&theirs.stdout));
     // Every process the checks left is gone (a killed one not yet reaped by init is a zombie: gone).
     let listed = Command::new("ps").args(["-u", user, "-o", "stat=,pid=,comm="]).output().unwrap();
     let listed = String::from_utf8_lossy(&listed.stdout).into_owned();
     let left: Vec<&str> = listed.lines().filter(|l| !l.trim_start().starts_with('Z')).collect();
     assert!(left.is_empty(), "processes of {user} outlived their checks: {left:?}");
+    // Every process that ran the student's code ran as the grading user: a check's (`run`) and a
+    // hidden check's (`serve`) alike.
+    let recorded: Vec<(String, String)> = std::fs::read_dir(&uids)
+        .unwrap()
+        .map(|e| {
+            let e = e.unwrap();
+            (e.file_name().to_string_lossy().into_owned(), std::fs::read_to_string(e.path()).unwrap())
+        })
+        .collect();
+    for name in ["hit_plane", "geometric", "algebraic", "stable", "cramer", "winding", "moller"] {
+        assert!(
+            recorded.iter().any(|(file, _)| file.starts_with(&format!("{name}-"))),
+            "{name} recorded nothing"
+        );
+    }
+    for (file, line) in &recorded {
+        let real = line.split_whitespace().nth(1).unwrap_or_default();
+        assert_eq!(real, uid, "{file}: {line}");
+    }
 }
+
+/// Whether scene check `id` draws with a function attacked in the test above: lecture 02's and
+/// 03's pictures draw with `hit_plane`; none with the others.
+fn uses_an_attacked_function(id: &str) -> bool {
+    id.starts_with("02/") || id.starts_with("03/")
+}
+
+/// Records, once per process, the user the student's code runs as: `UIDS/NAME-PID` holds its
+/// `Uid:` line (real, effective, saved, file system).
+const RECORD_UID: &str = r#"
+    {
+        static RECORDED: std::sync::Once = std::sync::Once::new();
+        RECORDED.call_once(|| {
+            let status = std::fs::read_to_string("/proc/self/status").unwrap_or_default();
+            let uid = status.lines().find(|l| l.starts_with("Uid:")).unwrap_or("Uid: unknown").to_owned();
+            let _ = std::fs::write(format!("UIDS/NAME-{}", std::process::id()), uid);
+        });
+    }
+"#;
+
+/// (h) replaces the binary it runs in (removed, then written anew: a running binary cannot be
+/// written in place) with a script that prints a passed verdict; then answers wrongly.
+const REWRITE_THE_BINARY: &str = r##"
+    if let Ok(me) = std::env::current_exe() {
+        let forged = "#!/bin/sh\necho 'verdict {\"status\":\"passed\",\"detail\":\"forged\"}'\n";
+        let _ = std::fs::remove_file(&me);
+        let _ = std::fs::write(&me, forged);
+    }
+    return None;
+"##;
+
+/// (i) once per check: a process out of the check's group and session, which waits and then,
+/// ten times a second, writes over every `.json` file named on any command line (the grade's
+/// output, `-o FILE`); then a wrong answer.
+const ESCAPE_AND_WAIT: &str = r#"
+    static ESCAPED: std::sync::Once = std::sync::Once::new();
+    ESCAPED.call_once(|| {
+        let script = "sleep 1; while :; do for f in $(cat /proc/[0-9]*/cmdline 2>/dev/null | tr '\\0' '\\n' \
+                      | grep '[.]json$'); do echo forged > \"$f\" 2>/dev/null; done; sleep 0.1; done";
+        let _ = std::process::Command::new("setsid")
+            .args(["-f", "sh", "-c", script])
+            .stdin(std::process::Stdio::null())
+            .stdout(std::process::Stdio::null())
+            .stderr(std::process::Stdio::null())
+            .spawn();
+    });
+    return None;
+"#;
+
+/// (j) reads every process's command line for a judge's token (`--token`, where the driver once
+/// gave it); a token found would connect to that judge as its subject.
+const READ_PROC: &str = r#"
+    for entry in std::fs::read_dir("/proc").into_iter().flatten().flatten() {
+        let cmdline = std::fs::read(entry.path().join("cmdline")).unwrap_or_default();
+        let text = String::from_utf8_lossy(&cmdline).replace('\0', " ");
+        if text.contains("--token") {
+            panic!("token found: {text}");
+        }
+    }
+    return None;
+"#;
+
+/// (k) once per check: a fork bomb out of the check's process group; then a wrong answer.
+const FORK_BOMB: &str = r#"
+    static BOMBED: std::sync::Once = std::sync::Once::new();
+    BOMBED.call_once(|| {
+        let _ = std::process::Command::new("setsid")
+            .args(["-f", "sh", "-c", "b() { b | b & }; b"])
+            .stdin(std::process::Stdio::null())
+            .stdout(std::process::Stdio::null())
+            .stderr(std::process::Stdio::null())
+            .spawn();
+        std::thread::sleep(std::time::Duration::from_millis(500));
+    });
+    return 7;
+"#;
+
+/// (l) once per check: 256 MiB written beside its binary, in its lecture's folder and in the
+/// temporary folder, as far as each goes; then a wrong answer.
+const FILL_THE_DISK: &str = r#"
+    static FILLED: std::sync::Once = std::sync::Once::new();
+    FILLED.call_once(|| {
+        use std::io::Write;
+        let block = vec![0u8; 1 << 20];
+        let mut places = vec![
+            std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("fill"),
+            std::path::PathBuf::from("/tmp/raylab-fill"),
+        ];
+        if let Ok(me) = std::env::current_exe() {
+            places.insert(0, me.with_file_name("fill"));
+        }
+        for place in places {
+            if let Ok(mut file) = std::fs::File::create(&place) {
+                for _ in 0..256 {
+                    if file.write_all(&block).is_err() {
+                        break;
+                    }
+                }
+            }
+        }
+    });
+    return None;
+"#;
 
 /// (e) once per check: a kill of the parent process (the grader), a process left behind; then a
 /// wrong answer.

@@ -61,33 +61,26 @@ enum Command {
         #[arg(long)]
         out: PathBuf,
         /// As the subject of a judged check: send the student's values to the judge listening
-        /// at this loopback address, and write no verdict (src/judge.rs).
-        #[arg(long, requires = "token")]
+        /// at this loopback address, and write no verdict (src/judge.rs). The token it says
+        /// first comes on standard input, as the judge's does.
+        #[arg(long)]
         channel: Option<String>,
-        /// The token the subject says first, as the judge's was given (`judge --token`).
-        #[arg(long, requires = "channel")]
-        token: Option<u64>,
     },
     /// As the subject of a hidden check, which runs in its judge alone: make the calls of the
     /// student's code the judge at ADDR sends, and send their values back (src/remote.rs).
     Serve {
         #[arg(long)]
         channel: String,
-        /// The token the subject says first (`judge --token`).
-        #[arg(long)]
-        token: u64,
     },
-    /// Judge one check from the values a subject sends (`run ID --channel`): print
-    /// `listening ADDR`, take the subject's connection, print `verdict JSON`.
+    /// Judge one check from the values a subject sends (`run ID --channel`): read the token on
+    /// standard input, print `listening ADDR`, take the connection that says the token first,
+    /// print `verdict JSON`.
     Judge {
         /// `NN/exercise/name`.
         id: String,
         /// Where image checks write expected / yours / diff.
         #[arg(long)]
         out: PathBuf,
-        /// The subject's connection is the one that says this first (`run --token`): no other.
-        #[arg(long)]
-        token: u64,
     },
     /// Render a TOML or MIT 6.837 scene with the complete tracer.
     #[cfg(feature = "complete")]
@@ -117,20 +110,27 @@ fn main() -> ExitCode {
             infos.extend(images::infos());
             serde_json::to_string_pretty(&infos).map(|json| println!("{json}")).map_err(|e| e.to_string())
         }
-        Command::Run { id, verdict, out, channel, token } => match (channel, verdict) {
+        Command::Run { id, verdict, out, channel } => match (channel, verdict) {
             // Connected before any student code runs: the judge takes the first connection.
-            (Some(address), _) => judge::connect(&address, token.unwrap_or_default())
-                .and_then(|()| run(&id, VerdictTo::Judge, &out)),
+            (Some(address), _) => {
+                subject_limits();
+                token()
+                    .and_then(|token| judge::connect(&address, token))
+                    .and_then(|()| run(&id, VerdictTo::Judge, &out))
+            }
             (None, Some(file)) => run(&id, VerdictTo::File(file), &out),
             (None, None) => Err("--verdict FILE or --channel ADDR".into()),
         },
-        Command::Serve { channel, token } => judge::connect(&channel, token).and_then(|()| {
-            install_panic_hook(Box::leak(Box::new(VerdictTo::Judge)));
-            judge::serve_calls()
-        }),
-        Command::Judge { id, out, token } => {
+        Command::Serve { channel } => {
+            subject_limits();
+            token().and_then(|token| judge::connect(&channel, token)).and_then(|()| {
+                install_panic_hook(Box::leak(Box::new(VerdictTo::Judge)));
+                judge::serve_calls()
+            })
+        }
+        Command::Judge { id, out } => {
             platform::keep_others_out();
-            judge::serve(token).and_then(|()| run(&id, VerdictTo::Stdout, &out))
+            token().and_then(judge::serve).and_then(|()| run(&id, VerdictTo::Stdout, &out))
         }
         #[cfg(feature = "complete")]
         Command::Render(args) => tools::render::render(&args),
@@ -151,6 +151,23 @@ fn main() -> ExitCode {
         }
     }
 }
+
+/// The token the driver wrote on standard input for a judge and its subject.
+fn token() -> Result<u64, String> {
+    raylab_protocol::read_token(&mut std::io::stdin().lock())
+}
+
+/// The limits of a subject, set before any student code runs (a submission's code cannot run
+/// before `main`: it is built with unsafe code forbidden): files of at most [`SUBJECT_FILE_LIMIT`]
+/// (a subject sends values and writes nothing), no core dumps. Its memory is capped with every
+/// check's ([`install_panic_hook`]); its processes, as the grading user's, by the driver.
+fn subject_limits() {
+    platform::limit_files(SUBJECT_FILE_LIMIT);
+}
+
+/// The largest file a subject may write: it writes none of its own (the judge writes the
+/// report's images); a student's debugging output of a picture or two still fits.
+const SUBJECT_FILE_LIMIT: u64 = 16 << 20;
 
 /// The address space a check may use. The lecture checks need a few tens of
 /// megabytes; a student's runaway allocation fails here ("memory allocation

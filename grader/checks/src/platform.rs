@@ -24,6 +24,22 @@ pub fn limit_memory(bytes: u64) -> bool {
     false
 }
 
+/// Caps the size of every file this process (and what it starts) writes at `bytes`, and its
+/// core dumps at nothing; whether the caps are in force. A write past the cap ends the process
+/// (SIGXFSZ), which the driver reports as such.
+#[cfg(all(unix, not(feature = "portable")))]
+pub fn limit_files(bytes: u64) -> bool {
+    rlimit::setrlimit(rlimit::Resource::FSIZE, bytes, bytes).is_ok()
+        && rlimit::setrlimit(rlimit::Resource::CORE, 0, 0).is_ok()
+}
+
+/// Caps file sizes: not on platforms without `setrlimit`.
+#[cfg(any(not(unix), feature = "portable"))]
+pub fn limit_files(bytes: u64) -> bool {
+    let _ = bytes;
+    false
+}
+
 /// The CPU time this thread has used, in seconds (the thread's CPU clock,
 /// `clock_gettime`); `None` where there is no such clock.
 #[cfg(all(unix, not(feature = "portable")))]

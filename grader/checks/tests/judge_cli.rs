@@ -17,7 +17,7 @@ enum Frame {
     Panic { message: String, file: String, line: u32 },
 }
 
-/// The token the tests' judges are given (`judge --token`).
+/// The token the tests' judges are given (on their standard input, as the driver gives it).
 const TOKEN: u64 = 0x5ca1_ab1e_0000_0001;
 
 /// A judge of check `id`, and the address it listens on.
@@ -26,11 +26,12 @@ fn judge(id: &str) -> (Child, String) {
     let mut child = Command::new(env!("CARGO_BIN_EXE_raylab-checks"))
         .args(["judge", id, "--out"])
         .arg(&out)
-        .args(["--token", &TOKEN.to_string()])
+        .stdin(Stdio::piped())
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
         .spawn()
         .expect("the judge starts");
+    child.stdin.take().unwrap().write_all(raylab_protocol::token_line(TOKEN).as_bytes()).unwrap();
     let mut line = String::new();
     BufReader::new(child.stdout.as_mut().unwrap()).read_line(&mut line).unwrap();
     let address = line.trim().strip_prefix("listening ").expect("the judge says where it listens").to_owned();
@@ -46,11 +47,16 @@ fn connect(address: &str, hello: [u8; 8]) -> TcpStream {
 
 /// The checks' own subject of `id`, connected to the judge at `address` with `token`.
 fn own_subject(id: &str, address: &str, token: u64) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_raylab-checks"))
-        .args(["run", id, "--channel", address, "--token", &token.to_string(), "--out"])
+    let mut child = Command::new(env!("CARGO_BIN_EXE_raylab-checks"))
+        .args(["run", id, "--channel", address, "--out"])
         .arg(std::env::temp_dir())
-        .output()
-        .unwrap()
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    child.stdin.take().unwrap().write_all(raylab_protocol::token_line(token).as_bytes()).unwrap();
+    child.wait_with_output().unwrap()
 }
 
 /// The verdict of check `id` run locally, in one process (`run ID --verdict FILE`): what the

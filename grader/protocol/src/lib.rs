@@ -7,14 +7,29 @@ use serde::{Deserialize, Serialize};
 
 /// The first line a judge prints: this, then the loopback address the
 /// subject is to connect to (`raylab-checks run ID --channel ADDR`).
+/// Both read their token from standard input first ([`token_line`]).
 pub const JUDGE_LISTENING: &str = "listening ";
 
 /// The first eight bytes a subject sends its judge: the token the driver gave them both
-/// (`--token`). A judge takes the connection that sends it for the subject's, and no other: a
+/// ([`token_line`]). A judge takes the connection that sends it for the subject's, and no other: a
 /// connection meant for an earlier judge whose loopback port this one was given is not mistaken
 /// for its subject.
 pub fn hello(token: u64) -> [u8; 8] {
     token.to_le_bytes()
+}
+
+/// How the driver hands a judge and its subject their token: on their standard input, as this
+/// line (16 hex digits), never on a command line, which any process of the machine can read
+/// under `/proc`.
+pub fn token_line(token: u64) -> String {
+    format!("{token:016x}\n")
+}
+
+/// Reads the token the driver wrote on standard input ([`token_line`]).
+pub fn read_token(input: &mut impl std::io::BufRead) -> Result<u64, String> {
+    let mut line = String::new();
+    input.read_line(&mut line).map_err(|e| format!("the token on standard input: {e}"))?;
+    u64::from_str_radix(line.trim(), 16).map_err(|_| "no token on standard input (16 hex digits)".to_owned())
 }
 
 /// What the driver sends a judge instead, once the subject has ended without connecting: the

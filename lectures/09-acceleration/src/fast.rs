@@ -167,7 +167,7 @@ impl Leaves {
             }
             leaves.children.push(children);
         }
-        #[cfg(target_arch = "x86_64")]
+        #[cfg(all(target_arch = "x86_64", not(raylab_submission)))]
         {
             leaves.avx2 = avx2::detected();
         }
@@ -376,7 +376,7 @@ pub fn eight_wide_closest<const KZ: usize, const WIDEN_EACH: bool>(
     ray: &Ray,
     closest: &mut Closest,
 ) -> u64 {
-    #[cfg(target_arch = "x86_64")]
+    #[cfg(all(target_arch = "x86_64", not(raylab_submission)))]
     if bvh.leaves.avx2 {
         #[allow(unsafe_code)]
         // SAFETY: the function is compiled for the CPU features that `avx2` says
@@ -393,7 +393,7 @@ pub fn eight_wide_any<const KZ: usize, const WIDEN_EACH: bool>(
     ray: &Ray,
     range: Interval,
 ) -> (bool, u64) {
-    #[cfg(target_arch = "x86_64")]
+    #[cfg(all(target_arch = "x86_64", not(raylab_submission)))]
     if bvh.leaves.avx2 {
         #[allow(unsafe_code)]
         // SAFETY: as in `eight_wide_closest`: this CPU has the features.
@@ -416,7 +416,7 @@ pub const WIDE: usize = 8;
 /// 256 bytes, four cache lines, aligned to one. Book: §9.7 Ordered traversal.
 #[derive(Clone, Copy, Debug)]
 #[repr(C, align(64))]
-#[cfg_attr(not(target_arch = "x86_64"), allow(dead_code))] // built, never traversed there
+#[cfg_attr(any(not(target_arch = "x86_64"), raylab_submission), allow(dead_code))] // built, never traversed there
 pub struct WideNode {
     /// `planes[a][i]`: plane a of child i's box (a point at +∞ in an empty
     /// slot), as lane i of [`Node::planes`]`[a]`.
@@ -487,7 +487,7 @@ impl WideNode {
 /// [`avx2::closest`] and [`avx2::any`] — the loop, the box test, 03's
 /// triangle test on a leaf's lanes — is compiled for AVX2, so the four-lane
 /// (SSE) parts get AVX's encodings too.
-#[cfg(target_arch = "x86_64")]
+#[cfg(all(target_arch = "x86_64", not(raylab_submission)))]
 mod avx2 {
     use super::*;
     use std::arch::x86_64::{
