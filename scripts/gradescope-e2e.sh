@@ -61,9 +61,13 @@ cp -a "$OUT/submissions/reference-tree" "$OUT/submissions/redteam"
 cp -a "$OUT/submissions/reference-tree" "$OUT/submissions/redteam-compile"
 cp -a "$OUT/submissions/reference-tree" "$OUT/submissions/redteam-runtime"
 cp -a "$OUT/submissions/handout" "$OUT/submissions/before-main"
-python3 - "$OUT/submissions" << 'PATCH'
+python3 - "$OUT/submissions" "$ROOT" << 'PATCH'
 import sys, pathlib
-subs = pathlib.Path(sys.argv[1])
+subs, root = pathlib.Path(sys.argv[1]), pathlib.Path(sys.argv[2])
+
+def fragment(name):
+    """An attack of the red team's (tests/redteam/), as tests/tests/redteam.rs inserts it."""
+    return (root / "tests/redteam" / f"{name}.rs").read_text()
 
 def attack(tree, file, function, code):
     path = subs / tree / file
@@ -97,109 +101,15 @@ attack("redteam", "lectures/05-shading/src/lambert.rs", "lambert", r'''
 ''')
 # (e) kills the grader (its parent) and leaves a process behind, once per check, then answers
 # wrongly.
-attack("redteam", "lectures/02-ray-casting/src/plane.rs", "hit_plane", r'''
-    static ONCE: std::sync::Once = std::sync::Once::new();
-    ONCE.call_once(|| {
-        let parent = std::os::unix::process::parent_id().to_string();
-        let _ = std::process::Command::new("kill").args(["-9", &parent]).status();
-        let _ = std::process::Command::new("sleep").arg("600").spawn();
-    });
-    return None;
-''')
-# (h) its own binary replaced by a script that prints a passed verdict; then a wrong answer.
-attack("redteam-runtime", "lectures/02-ray-casting/src/sphere.rs", "hit_sphere_geometric", r'''
-    if let Ok(me) = std::env::current_exe() {
-        let _ = std::fs::remove_file(&me);
-        let _ = std::fs::write(&me, "#!/bin/sh\necho 'verdict {\"status\":\"passed\"}'\n");
-    }
-    return None;
-''')
-# (i) out of the check's group and session, waiting to write over every .json named on a command
-# line (the results); then a wrong answer.
-attack("redteam-runtime", "lectures/02-ray-casting/src/sphere.rs", "hit_sphere_algebraic", r'''
-    static ESCAPED: std::sync::Once = std::sync::Once::new();
-    ESCAPED.call_once(|| {
-        let script = "sleep 1; while :; do for f in $(cat /proc/[0-9]*/cmdline 2>/dev/null | tr '\\0' '\\n' \
-                      | grep '[.]json$') /autograder/results/results.json; do echo forged > \"$f\" 2>/dev/null; \
-                      done; sleep 0.1; done";
-        let _ = std::process::Command::new("setsid").args(["-f", "sh", "-c", script]).spawn();
-    });
-    return None;
-''')
-# (j) every command line read for a judge's token.
-attack("redteam-runtime", "lectures/03-polygons-triangles/src/triangle.rs", "hit_triangle_cramer", r'''
-    for entry in std::fs::read_dir("/proc").into_iter().flatten().flatten() {
-        let text = String::from_utf8_lossy(&std::fs::read(entry.path().join("cmdline")).unwrap_or_default())
-            .replace('\0', " ");
-        if text.contains("--token") {
-            panic!("token found: {text}");
-        }
-    }
-    return None;
-''')
-# (k) a fork bomb out of the check's process group.
-attack("redteam-runtime", "lectures/03-polygons-triangles/src/polygon.rs", "winding_number", r'''
-    static BOMBED: std::sync::Once = std::sync::Once::new();
-    BOMBED.call_once(|| {
-        let _ = std::process::Command::new("setsid").args(["-f", "sh", "-c", "b() { b | b & }; b"]).spawn();
-        std::thread::sleep(std::time::Duration::from_millis(500));
-    });
-    return 7;
-''')
-# (l) 256 MiB beside its binary, in the work folder and in /tmp, as far as each goes.
-attack("redteam-runtime", "lectures/03-polygons-triangles/src/triangle.rs", "hit_triangle_moller_trumbore", r'''
-    static FILLED: std::sync::Once = std::sync::Once::new();
-    FILLED.call_once(|| {
-        use std::io::Write;
-        let block = vec![0u8; 1 << 20];
-        let mut places = vec![std::path::PathBuf::from("/autograder/work/fill"), "/tmp/raylab-fill".into()];
-        if let Ok(me) = std::env::current_exe() {
-            places.insert(0, me.with_file_name("fill"));
-        }
-        for place in places {
-            if let Ok(mut file) = std::fs::File::create(&place) {
-                for _ in 0..256 {
-                    if file.write_all(&block).is_err() {
-                        break;
-                    }
-                }
-            }
-        }
-    });
-    return None;
-''')
-# (g) a constructor that runs before the checks' main, forging their list and verdicts.
+attack("redteam", "lectures/02-ray-casting/src/plane.rs", "hit_plane", fragment("kill-the-grader"))
+# (g)–(l): the red team's attacks from outside the function bodies.
+attack("redteam-runtime", "lectures/02-ray-casting/src/sphere.rs", "hit_sphere_geometric", fragment("rewrite-the-binary"))
+attack("redteam-runtime", "lectures/02-ray-casting/src/sphere.rs", "hit_sphere_algebraic", fragment("escape-and-wait"))
+attack("redteam-runtime", "lectures/03-polygons-triangles/src/triangle.rs", "hit_triangle_cramer", fragment("read-proc"))
+attack("redteam-runtime", "lectures/03-polygons-triangles/src/polygon.rs", "winding_number", fragment("fork-bomb"))
+attack("redteam-runtime", "lectures/03-polygons-triangles/src/triangle.rs", "hit_triangle_moller_trumbore", fragment("fill-the-disk"))
 lib = subs / "before-main/lectures/01-transforms/src/lib.rs"
-lib.write_text(lib.read_text() + r'''
-#[allow(unsafe_code)]
-#[unsafe(link_section = ".init_array")]
-#[used]
-static FORGE: extern "C" fn() = forge;
-
-extern "C" fn forge() {
-    if std::env::var_os("FORGED").is_some() {
-        return;
-    }
-    let args: Vec<String> = std::fs::read("/proc/self/cmdline")
-        .map(|b| b.split(|c| *c == 0).map(|s| String::from_utf8_lossy(s).into_owned()).collect())
-        .unwrap_or_default();
-    match args.get(1).map(String::as_str) {
-        Some("list") => {
-            if let Ok(out) = std::process::Command::new("/proc/self/exe").arg("list").env("FORGED", "1").output() {
-                print!("{}", String::from_utf8_lossy(&out.stdout).replace("\"judged\": true", "\"judged\": false"));
-                std::process::exit(0);
-            }
-        }
-        Some("run") => {
-            if let Some(i) = args.iter().position(|a| a == "--verdict") {
-                let _ = std::fs::write(&args[i + 1], r#"{"status":"passed","detail":"forged"}"#);
-                std::process::exit(0);
-            }
-        }
-        _ => {}
-    }
-}
-''')
+lib.write_text(lib.read_text() + "\n" + fragment("before-main"))
 # (d) at compile time: the build runs as the grading user, who cannot read the source.
 attack("redteam-compile", "lectures/10-textures-sampling/src/checker.rs", "checker", r'''
     let _hidden: &str = include_str!("/autograder/source/grader/checks/src/lectures/hidden.rs");
@@ -221,6 +131,7 @@ for name in reference handout redteam redteam-compile redteam-runtime before-mai
   left=$(ps -u raylab-student -o stat=,pid=,comm= | grep -v '^ *Z' || true)
   [ -z "$left" ] || { echo "$name: processes of raylab-student left: $left" >&2; exit 1; }
   files=$(find /tmp /var/tmp /dev/shm -maxdepth 1 -user raylab-student 2> /dev/null || true)
+  files="$files$(find /autograder/work -name fill 2> /dev/null || true)"
   [ -z "$files" ] || { echo "$name: files of raylab-student left: $files" >&2; exit 1; }
   cp /tmp/grader.err "$OUT/$name.err" 2> /dev/null || true
   echo "run_autograder $name: $took s"

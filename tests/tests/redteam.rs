@@ -265,38 +265,7 @@ fn snapshots_and_hidden_checks_are_out_of_the_students_reach() {
 /// forges the list the binary prints and the verdict file it is given. Appended to lecture 09's
 /// `lib.rs` (in lecture 01 it would cost every lecture; lecture 09 has hidden checks, which the
 /// judge's list holds and the student's build does not).
-const BEFORE_MAIN: &str = r##"
-
-#[allow(unsafe_code)]
-#[unsafe(link_section = ".init_array")]
-#[used]
-static FORGE: extern "C" fn() = forge;
-
-extern "C" fn forge() {
-    if std::env::var_os("FORGED").is_some() {
-        return;
-    }
-    let args: Vec<String> = std::fs::read("/proc/self/cmdline")
-        .map(|b| b.split(|c| *c == 0).map(|s| String::from_utf8_lossy(s).into_owned()).collect())
-        .unwrap_or_default();
-    match args.get(1).map(String::as_str) {
-        Some("list") => {
-            let out = std::process::Command::new("/proc/self/exe").arg("list").env("FORGED", "1").output();
-            if let Ok(out) = out {
-                print!("{}", String::from_utf8_lossy(&out.stdout).replace("\"judged\": true", "\"judged\": false"));
-                std::process::exit(0);
-            }
-        }
-        Some("run") => {
-            if let Some(i) = args.iter().position(|a| a == "--verdict") {
-                let _ = std::fs::write(&args[i + 1], r#"{"status":"passed","detail":"forged"}"#);
-                std::process::exit(0);
-            }
-        }
-        _ => {}
-    }
-}
-"##;
+const BEFORE_MAIN: &str = include_str!("../redteam/before-main.rs");
 
 /// The last line of lecture 09's `lib.rs`, after which [`BEFORE_MAIN`] goes.
 const LECTURE_09_LAST: &str = "pub use traverse::{Closest, STACK_SIZE, Waiting};\n";
@@ -552,96 +521,24 @@ const RECORD_UID: &str = r#"
 
 /// (h) replaces the binary it runs in (removed, then written anew: a running binary cannot be
 /// written in place) with a script that prints a passed verdict; then answers wrongly.
-const REWRITE_THE_BINARY: &str = r##"
-    if let Ok(me) = std::env::current_exe() {
-        let forged = "#!/bin/sh\necho 'verdict {\"status\":\"passed\",\"detail\":\"forged\"}'\n";
-        let _ = std::fs::remove_file(&me);
-        let _ = std::fs::write(&me, forged);
-    }
-    return None;
-"##;
+const REWRITE_THE_BINARY: &str = include_str!("../redteam/rewrite-the-binary.rs");
 
 /// (i) once per check: a process out of the check's group and session, which waits and then,
 /// ten times a second, writes over every `.json` file named on any command line (the grade's
 /// output, `-o FILE`); then a wrong answer.
-const ESCAPE_AND_WAIT: &str = r#"
-    static ESCAPED: std::sync::Once = std::sync::Once::new();
-    ESCAPED.call_once(|| {
-        let script = "sleep 1; while :; do for f in $(cat /proc/[0-9]*/cmdline 2>/dev/null | tr '\\0' '\\n' \
-                      | grep '[.]json$'); do echo forged > \"$f\" 2>/dev/null; done; sleep 0.1; done";
-        let _ = std::process::Command::new("setsid")
-            .args(["-f", "sh", "-c", script])
-            .stdin(std::process::Stdio::null())
-            .stdout(std::process::Stdio::null())
-            .stderr(std::process::Stdio::null())
-            .spawn();
-    });
-    return None;
-"#;
+const ESCAPE_AND_WAIT: &str = include_str!("../redteam/escape-and-wait.rs");
 
 /// (j) reads every process's command line for a judge's token (`--token`, where the driver once
 /// gave it); a token found would connect to that judge as its subject.
-const READ_PROC: &str = r#"
-    for entry in std::fs::read_dir("/proc").into_iter().flatten().flatten() {
-        let cmdline = std::fs::read(entry.path().join("cmdline")).unwrap_or_default();
-        let text = String::from_utf8_lossy(&cmdline).replace('\0', " ");
-        if text.contains("--token") {
-            panic!("token found: {text}");
-        }
-    }
-    return None;
-"#;
+const READ_PROC: &str = include_str!("../redteam/read-proc.rs");
 
 /// (k) once per check: a fork bomb out of the check's process group; then a wrong answer.
-const FORK_BOMB: &str = r#"
-    static BOMBED: std::sync::Once = std::sync::Once::new();
-    BOMBED.call_once(|| {
-        let _ = std::process::Command::new("setsid")
-            .args(["-f", "sh", "-c", "b() { b | b & }; b"])
-            .stdin(std::process::Stdio::null())
-            .stdout(std::process::Stdio::null())
-            .stderr(std::process::Stdio::null())
-            .spawn();
-        std::thread::sleep(std::time::Duration::from_millis(500));
-    });
-    return 7;
-"#;
+const FORK_BOMB: &str = include_str!("../redteam/fork-bomb.rs");
 
 /// (l) once per check: 256 MiB written beside its binary, in its lecture's folder and in the
 /// temporary folder, as far as each goes; then a wrong answer.
-const FILL_THE_DISK: &str = r#"
-    static FILLED: std::sync::Once = std::sync::Once::new();
-    FILLED.call_once(|| {
-        use std::io::Write;
-        let block = vec![0u8; 1 << 20];
-        let mut places = vec![
-            std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("fill"),
-            std::path::PathBuf::from("/tmp/raylab-fill"),
-        ];
-        if let Ok(me) = std::env::current_exe() {
-            places.insert(0, me.with_file_name("fill"));
-        }
-        for place in places {
-            if let Ok(mut file) = std::fs::File::create(&place) {
-                for _ in 0..256 {
-                    if file.write_all(&block).is_err() {
-                        break;
-                    }
-                }
-            }
-        }
-    });
-    return None;
-"#;
+const FILL_THE_DISK: &str = include_str!("../redteam/fill-the-disk.rs");
 
 /// (e) once per check: a kill of the parent process (the grader), a process left behind; then a
 /// wrong answer.
-const KILL_THE_GRADER: &str = r#"
-    static ONCE: std::sync::Once = std::sync::Once::new();
-    ONCE.call_once(|| {
-        let parent = std::os::unix::process::parent_id().to_string();
-        let _ = std::process::Command::new("kill").args(["-9", &parent]).status();
-        let _ = std::process::Command::new("sleep").arg("600").spawn();
-    });
-    return None;
-"#;
+const KILL_THE_GRADER: &str = include_str!("../redteam/kill-the-grader.rs");
