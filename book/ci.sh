@@ -5,7 +5,10 @@
 # 1. tools: installs mdBook and mdbook-katex at the pinned versions when they
 #    are missing or of another version (cargo install --locked; ≈ 95 s + 45 s);
 # 2. build: `mdbook build book`, failing on any WARN or ERROR line;
-# 3. links: book/linkcheck.py on the built HTML (relative links, images and
+# 3. the handout's book: `grader handout`, then `mdbook build book` in it, as a
+#    student builds it: no WARN or ERROR (nothing it includes is left out of the
+#    handout), and its links resolve;
+#    links: book/linkcheck.py on the built HTML (relative links, images and
 #    #fragments resolve; no page loads anything from the network);
 # 4. figures: book/figures.sh --check (every figure equals its snapshot);
 # 5. browser: installs Debian's chromium when /usr/bin/chromium is missing, then
@@ -61,6 +64,26 @@ if [ "$status" -ne 0 ] || [ -n "$problems" ]; then
     printf '%s\n' "$problems"
     exit 1
 fi
+
+step "the handout's book: grader handout, then mdbook build book there, as a student does"
+# Nothing it includes or links may be missing from the handout (the checks' tests, the
+# instructors' scripts and documents are left out of it).
+handout=$(mktemp -d)
+trap 'rm -f "$log"; rm -rf "$handout"' EXIT
+cargo run -q -p grader -- handout --force "$handout/raylab" >/dev/null
+status=0
+(cd "$handout/raylab" && mdbook build book) >"$log" 2>&1 || status=$?
+sed -e 's/\x1b\[[0-9;]*m//g' "$log" >"$log.plain" && mv "$log.plain" "$log"
+problems=$(grep -E '(^|[[:space:]])(WARN|WARNING|ERROR)([[:space:]]|$)|\[(WARN|WARNING|ERROR)\]' "$log" \
+    | grep -vF "$KNOWN_WARNING" || true)
+if [ "$status" -ne 0 ] || [ -n "$problems" ]; then
+    cat "$log"
+    echo "book: the handout's book failed to build (exit $status) or warned:"
+    printf '%s\n' "$problems"
+    exit 1
+fi
+python3 "$book/linkcheck.py" "$handout/raylab/book/book"
+echo "the handout's book builds without a warning, and its links resolve"
 
 step "links: python3 book/linkcheck.py"
 python3 "$book/linkcheck.py" "$book/book"

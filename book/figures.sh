@@ -90,6 +90,19 @@ for figure in $shown; do
             ;;
     esac
 done
+# The ray tree chapter 8 prints: the grader's own test snapshot (ray_tree_cli), from its line 5
+# (after insta's header), so that the book shows what `grader render --tree` prints and the
+# handout, which has no checks' tests, still has it.
+tree_src="$root/grader/checks/tests/snapshots/ray_tree_cli__glass_sphere_pixel_100_75.snap"
+tree="08-glass-sphere-tree.txt"
+listed="$listed $tree"
+if ! $check; then
+    mkdir -p "$out"
+    tail -n +5 "$tree_src" >"$out/$tree"
+elif ! tail -n +5 "$tree_src" | cmp -s - "$out/$tree"; then
+    echo "figures: stale or missing book/src/figures/$tree (lines 5– of $tree_src)"
+    problems=$((problems + 1))
+fi
 if ! $check; then
     echo "figures: $(ls "$out" | wc -l) files in $out"
     exit 0

@@ -127,12 +127,15 @@ for name in reference handout redteam redteam-compile redteam-runtime before-mai
   took=$(elapsed "$start" "$(seconds)")
   WALL[$name]="${WALL[$name]:-}${WALL[$name]:+, }$took"
   cp /autograder/results/results.json "$OUT/$name.json"
-  # Nothing of the grading user's outlives a grade: no process (a zombie is gone), no file in /tmp.
-  left=$(ps -u raylab-student -o stat=,pid=,comm= | grep -v '^ *Z' || true)
-  [ -z "$left" ] || { echo "$name: processes of raylab-student left: $left" >&2; exit 1; }
-  files=$(find /tmp /var/tmp /dev/shm -maxdepth 1 -user raylab-student 2> /dev/null || true)
-  files="$files$(find /autograder/work -name fill 2> /dev/null || true)"
-  [ -z "$files" ] || { echo "$name: files of raylab-student left: $files" >&2; exit 1; }
+  # Nothing of the grading users' outlives a grade: no process (a zombie is gone), no file in /tmp.
+  for user in $(getent passwd | cut -d: -f1 | grep '^raylab-student'); do
+    left=$(ps -u "$user" -o stat=,pid=,comm= | grep -v '^ *Z' || true)
+    [ -z "$left" ] || { echo "$name: processes of $user left: $left" >&2; exit 1; }
+    files=$(find /tmp /var/tmp /dev/shm -maxdepth 1 -user "$user" 2> /dev/null || true)
+    [ -z "$files" ] || { echo "$name: files of $user left: $files" >&2; exit 1; }
+  done
+  files=$(find /autograder/work -name fill 2> /dev/null || true)
+  [ -z "$files" ] || { echo "$name: the work folder was written: $files" >&2; exit 1; }
   cp /tmp/grader.err "$OUT/$name.err" 2> /dev/null || true
   echo "run_autograder $name: $took s"
 done

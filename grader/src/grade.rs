@@ -70,9 +70,10 @@ pub struct GradeOptions {
     /// A judge (the checks built with every exercise stubbed, `submission::judge`): the
     /// checks declared `judged` run in two processes, the verdict the judge's (`run_judged`).
     pub judge: Option<PathBuf>,
-    /// The user the student's code is built and run as (`grade --run-as`); the judge runs as this
+    /// The users the student's code is built and run as (`grade --run-as`): the first builds, and
+    /// each runs one job's checks (at most as many jobs as users); the judge runs as this
     /// process's.
-    pub run_as: Option<crate::platform::RunAs>,
+    pub run_as: Vec<crate::platform::RunAs>,
     /// Where the grader writes (images, the report), when not `grader/` beside the build.
     pub out_dir: Option<PathBuf>,
 }
@@ -143,16 +144,18 @@ pub fn grade(ws: &Workspace, options: &GradeOptions) -> Result<Grade, String> {
                 f64: options.f64,
                 target_dir: options.target_dir.clone(),
                 show_progress: options.show_progress,
-                run_as: options.run_as.clone(),
+                run_as: options.run_as.first().cloned(),
                 submission,
             },
         )?,
     };
-    if let (Some(user), Some(target)) = (&options.run_as, &options.target_dir) {
+    if let (false, Some(target)) = (options.run_as.is_empty(), &options.target_dir) {
         // Built: the student's build folder is the grader's again (the binary the checks run
         // cannot be rewritten by one of them), and nothing of the build is left running.
         crate::platform::reclaim_tree(target)?;
-        crate::platform::sweep(user, &BTreeSet::new());
+        for user in &options.run_as {
+            crate::platform::sweep(user, &BTreeSet::new());
+        }
     }
     let all = match &options.judge {
         // Which checks exist, their points, needs, limits and hidden flags are the judge's word (a
@@ -195,20 +198,25 @@ pub fn grade(ws: &Workspace, options: &GradeOptions) -> Result<Grade, String> {
     }
     let results = Mutex::new(verdicts);
     let queue = Mutex::new(to_run.into_iter());
-    let jobs = options.jobs.max(1);
+    // As other users, a job per user: a check's processes count against its user's limit only.
+    let jobs = match options.run_as.len() {
+        0 => options.jobs.max(1),
+        users => options.jobs.clamp(1, users),
+    };
     let lecture_of = |file: &str| ws.lecture_of_path(file);
     std::thread::scope(|scope| {
-        for _ in 0..jobs {
-            scope.spawn(|| {
+        for job in 0..jobs {
+            let (results, queue, infos, lecture_of) = (&results, &queue, &infos, &lecture_of);
+            let (binary, out, scratch) = (&built.binary, &out, &scratch);
+            let user = options.run_as.get(job);
+            scope.spawn(move || {
                 while let Some(index) = queue.lock().map(|mut q| q.next()).unwrap_or(None) {
                     let info = infos[index].clone();
                     let timeout = Duration::from_secs(info.timeout_s.into());
                     // A submission's every check is judged: nothing its process writes is a verdict.
                     let ran = match &options.judge {
-                        Some(judge) => {
-                            run_judged(&built.binary, judge, &info, &out, timeout, options.run_as.as_ref())
-                        }
-                        None => run_check(&built.binary, &info.id, &scratch, &out, timeout),
+                        Some(judge) => run_judged(binary, judge, &info, out, timeout, user),
+                        None => run_check(binary, &info.id, scratch, out, timeout),
                     };
                     let verdict = match ran {
                         Ok(ran) => classify(info, &ran, lecture_of),
@@ -225,14 +233,27 @@ pub fn grade(ws: &Workspace, options: &GradeOptions) -> Result<Grade, String> {
         results.into_inner().map_err(|_| "a grading thread panicked")?.into_iter().flatten().collect();
     apply_needs(&mut verdicts);
     verdicts.truncate(shown);
-    // Lecture by lecture (the list gives the unit checks of every lecture, then the images):
-    // the table, the report and the JSON read in the course's order.
-    verdicts.sort_by(|a, b| a.info.lecture.cmp(&b.info.lecture));
+    course_order(ws, &mut verdicts);
     Ok(Grade {
         verdicts,
         compile_errors: built.failed.into_iter().collect(),
         seconds: start.elapsed().as_secs_f64(),
     })
+}
+
+/// Sorts `verdicts` in the course's order: lecture by lecture, each lecture's exercises in the
+/// order of its README's table (the chapter's, tested), then its pictures, each group as the
+/// checks declare it. The table, the report, the JSON and `next:` read in it.
+fn course_order(ws: &Workspace, verdicts: &mut [Verdict]) {
+    let orders: std::collections::BTreeMap<String, Vec<String>> =
+        ws.lectures.iter().map(|l| (l.number.clone(), ws.exercise_order(&l.number))).collect();
+    let place = |v: &Verdict| {
+        let order = orders.get(&v.info.lecture);
+        let row = order.and_then(|o| o.iter().position(|e| *e == v.info.exercise)).unwrap_or(usize::MAX);
+        (v.info.lecture.clone(), v.info.kind == raylab_protocol::Kind::Image, row)
+    };
+    // Stable: equal keys keep the declared order.
+    verdicts.sort_by_cached_key(place);
 }
 
 /// The verdict of a check that cannot run in this build, or `None`.
@@ -289,6 +310,40 @@ fn from_judge(judge: &Path, built: &Built) -> Result<Vec<Info>, String> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The checks declare lecture 01's rotations before its `transform_point`; its README (and
+    /// chapter) teach `translate`, `scale`, then `transform_point`: the grade, and so `next:`,
+    /// reads in the README's order, pictures last.
+    #[test]
+    fn the_grade_reads_in_the_readmes_order_pictures_last() {
+        let ws = Workspace::open(&crate::workspace::own_root()).unwrap();
+        let verdict = |id: &str, kind| {
+            let info = Info { kind, ..crate::verdict::test_info(id) };
+            Verdict::new(info, Status::Passed, String::new())
+        };
+        let unit = raylab_protocol::Kind::Unit;
+        let mut verdicts = vec![
+            verdict("02/hit_plane/unit", unit),
+            verdict("01/image/camera", raylab_protocol::Kind::Image),
+            verdict("01/rotate_x/unit", unit),
+            verdict("01/transform_point/unit", unit),
+            verdict("01/translate/unit", unit),
+            verdict("01/translate/far", unit),
+        ];
+        course_order(&ws, &mut verdicts);
+        let ids: Vec<&str> = verdicts.iter().map(|v| v.info.id.as_str()).collect();
+        assert_eq!(
+            ids,
+            [
+                "01/translate/unit",
+                "01/translate/far",
+                "01/transform_point/unit",
+                "01/rotate_x/unit",
+                "01/image/camera",
+                "02/hit_plane/unit"
+            ]
+        );
+    }
 
     #[test]
     fn selections_read_as_lecture_exercise_or_check() {

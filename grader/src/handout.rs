@@ -435,6 +435,28 @@ mod hint_tests {
         exercises
     }
 
+    /// The student README's example of a grade's last lines counts what the grader counts: every
+    /// exercise (each is a stub in the handout and has checks under its name, tested in
+    /// tests/tests/grader.rs), in all and per lecture.
+    #[test]
+    fn the_student_readmes_counts_are_the_exercises() {
+        let root = own_root();
+        let ws = Workspace::open(&root).unwrap();
+        let counts: Vec<usize> = ws.lectures.iter().map(|l| lecture_exercises(&root, l).len()).collect();
+        let readme = std::fs::read_to_string(root.join("grader/STUDENT-README.md")).unwrap();
+        let line =
+            readme.lines().find(|l| l.starts_with("exercises passed: 0 of ")).expect("the example line");
+        let total: usize =
+            line["exercises passed: 0 of ".len()..].split_whitespace().next().unwrap().parse().unwrap();
+        assert_eq!(total, counts.iter().sum::<usize>(), "{line}");
+        for (lecture, count) in ws.lectures.iter().zip(&counts) {
+            let said = format!("{} 0/{count}", lecture.number);
+            if line.contains(&format!("{} 0/", lecture.number)) {
+                assert!(line.contains(&said), "{line}: lecture {} has {count} exercises", lecture.number);
+            }
+        }
+    }
+
     /// `grader hint` reads `lectures/NN-*/hints.toml`: every exercise has
     /// hints, and every hint names an exercise of its lecture.
     #[test]
@@ -456,38 +478,6 @@ mod hint_tests {
         }
     }
 
-    /// The functions named in the first column headed "function" (or
-    /// "exercise") of the table under the first heading starting with
-    /// `heading`: backquoted names before " — ", parenthesised notes left out.
-    fn table_names(text: &str, heading: &str) -> Option<std::collections::BTreeSet<String>> {
-        let after = &text[text.find(heading)?..];
-        let rows: Vec<&str> =
-            after.lines().skip_while(|l| !l.starts_with('|')).take_while(|l| l.starts_with('|')).collect();
-        let cells = |row: &str| -> Vec<String> {
-            row.trim().trim_matches('|').split('|').map(|c| c.trim().to_owned()).collect()
-        };
-        let header = cells(rows.first()?);
-        let column =
-            header.iter().position(|h| ["function", "exercise"].contains(&h.to_lowercase().as_str()))?;
-        let mut names = std::collections::BTreeSet::new();
-        for row in rows.iter().skip(2) {
-            let mut cell = cells(row).get(column)?.split(" — ").next()?.to_owned();
-            // Parenthesised notes ("(§1.2)", "(the body of `trace`)", "(p, n, dir, from)") are no names.
-            while let (Some(open), Some(close)) = (cell.find('('), cell.find(')')) {
-                if close < open {
-                    break;
-                }
-                cell.replace_range(open..=close, "");
-            }
-            for quoted in cell.split('`').skip(1).step_by(2) {
-                let name: String =
-                    quoted.chars().take_while(|c| c.is_alphanumeric() || *c == '_' || *c == ':').collect();
-                names.insert(name);
-            }
-        }
-        Some(names)
-    }
-
     /// Each lecture's exercises (its SOLUTION regions) are the ones its README's
     /// "Exercises" table and its book chapter's "Exercises" table list: a new or
     /// renamed exercise that one of them misses fails here, naming the file.
@@ -502,10 +492,11 @@ mod hint_tests {
                 [format!("lectures/{}/README.md", lecture.folder), format!("book/src/{}.md", lecture.folder)]
             {
                 let text = std::fs::read_to_string(root.join(&place)).unwrap_or_default();
-                let Some(listed) = table_names(&text, "## Exercises") else {
+                let Some(listed) = crate::workspace::exercise_table(&text, "## Exercises") else {
                     problems.push(format!("{place}: no \"## Exercises\" table with a function column"));
                     continue;
                 };
+                let listed: std::collections::BTreeSet<String> = listed.into_iter().collect();
                 let missing: Vec<_> = exercises.difference(&listed).collect();
                 let extra: Vec<_> = listed.difference(&exercises).collect();
                 if !missing.is_empty() || !extra.is_empty() {
@@ -514,6 +505,38 @@ mod hint_tests {
             }
         }
         assert!(problems.is_empty(), "{}", problems.join("\n"));
+    }
+
+    /// The README's "Exercises, in order" and the chapter's "Exercises" table are one list: the
+    /// same functions in the same order (the order the grade reads in and `next:` follows).
+    #[test]
+    fn the_readme_and_the_chapter_list_the_exercises_in_one_order() {
+        let root = own_root();
+        let ws = Workspace::open(&root).unwrap();
+        let mut problems = Vec::new();
+        for lecture in &ws.lectures {
+            let readme = ws.exercise_order(&lecture.number);
+            let chapter_file = format!("book/src/{}.md", lecture.folder);
+            let text = std::fs::read_to_string(root.join(&chapter_file)).unwrap_or_default();
+            let chapter = crate::workspace::exercise_table(&text, "## Exercises").unwrap_or_default();
+            if let Some(problem) = order_problem(&readme, &chapter) {
+                problems
+                    .push(format!("lectures/{}/README.md against {chapter_file}: {problem}", lecture.folder));
+            }
+        }
+        assert!(problems.is_empty(), "{}", problems.join("\n"));
+        // A planted drift: two rows swapped in one table.
+        let swapped = ["translate", "rotate_x", "scale"].map(String::from);
+        let said = order_problem(&["translate", "scale", "rotate_x"].map(String::from), &swapped);
+        assert_eq!(said.as_deref(), Some("row 2 is `scale` in one, `rotate_x` in the other"));
+    }
+
+    /// Where two lists of exercises first differ, if they do.
+    fn order_problem(a: &[String], b: &[String]) -> Option<String> {
+        if let Some(i) = a.iter().zip(b).position(|(x, y)| x != y) {
+            return Some(format!("row {} is `{}` in one, `{}` in the other", i + 1, a[i], b[i]));
+        }
+        (a.len() != b.len()).then(|| format!("{} rows against {}", a.len(), b.len()))
     }
 
     /// Every "Book: §N.M" of the lectures' and the kit's code names a section

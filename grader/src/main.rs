@@ -97,12 +97,14 @@ enum Cmd {
         /// [default: target/grader/submission].
         #[arg(long)]
         workdir: Option<PathBuf>,
-        /// Build and run the student's code as this user (Unix; the grader runs as root): one that
-        /// cannot read this workspace, where the judge, the snapshots and the hidden checks are.
-        /// The user owns only the folder cargo builds in (work/target/student). What Gradescope's
-        /// `run_autograder` does.
-        #[arg(long, value_name = "USER")]
-        run_as: Option<String>,
+        /// Build and run the student's code as these users (Unix; the grader runs as root): users
+        /// who cannot read this workspace, where the judge, the snapshots and the hidden checks
+        /// are. The first builds, and owns only the folder cargo builds in (work/target/student)
+        /// while it does; each runs the checks of one job at a time (at most one job per user),
+        /// so that what one check's processes take (its user's process limit) is not another's.
+        /// What Gradescope's `run_autograder` does.
+        #[arg(long, value_name = "USER,…", value_delimiter = ',')]
+        run_as: Vec<String>,
         #[command(flatten)]
         grade: GradeArgs,
     },
@@ -181,15 +183,18 @@ fn main() -> ExitCode {
         Some(Cmd::Grade { submission, workdir, run_as, grade }) => {
             // The student's code may run as this user: keep it out of this process's pipes.
             platform::keep_others_out();
-            let run_as = run_as.as_deref().map(platform::user).transpose();
+            let run_as: Result<Vec<platform::RunAs>, String> =
+                run_as.iter().map(|u| platform::user(u)).collect();
             run_as.and_then(|run_as| {
-                if run_as.is_some() {
-                    // The grading user's processes are capped (a fork bomb); root, this, is not.
+                if !run_as.is_empty() {
+                    // The grading user's processes are capped (a fork bomb); root, this, is not. What
+                    // a check leaves is ended and reaped here.
                     platform::limit_user_processes(platform::USER_PROCESSES)?;
+                    platform::adopt_orphans();
                 }
                 let root = workspace::own_root();
                 let (ws, target) =
-                    submission::prepare(&root, &submission, workdir.as_deref(), run_as.as_ref())?;
+                    submission::prepare(&root, &submission, workdir.as_deref(), run_as.first())?;
                 let judge = submission::judge(&root, &options())?;
                 grade_command(&Ok(ws), &grade, Some(Submission { target, judge, run_as }))
             })
@@ -228,7 +233,7 @@ fn options() -> GradeOptions {
         show_progress: true,
         binary: std::env::var_os("RAYLAB_CHECKS_BINARY").map(PathBuf::from),
         judge: None,
-        run_as: None,
+        run_as: Vec::new(),
         out_dir: None,
     }
 }
@@ -240,8 +245,8 @@ struct Submission {
     target: PathBuf,
     /// The judge binary (`submission::judge`).
     judge: PathBuf,
-    /// The user the student's code runs as (`--run-as`).
-    run_as: Option<platform::RunAs>,
+    /// The users the student's code runs as (`--run-as`), one per job.
+    run_as: Vec<platform::RunAs>,
 }
 
 fn grade_command(

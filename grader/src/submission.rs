@@ -341,9 +341,11 @@ const SETUP: &str = r#"#!/usr/bin/env bash
 # raylab autograder, run once as root when Gradescope builds the image (scripts/gradescope-e2e.sh
 # runs it the same way on any Linux machine). It
 #  1. finds a Rust toolchain (cargo on the PATH or in ~/.cargo), installing one only when none is found;
-#  2. gives the grading user {USER} read-only copies of the toolchain and of the crates' sources in
-#     /usr/local/lib/raylab (hard links where the file system allows), and nothing else: the
-#     autograder's source, where the judge, the snapshots and the hidden checks are, is root's alone;
+#  2. makes the grading users, {USER} and one more per further core ({USER}-2, …: each grades one
+#     check at a time, so a check's processes count against its own user's limit), and gives them
+#     read-only copies of the toolchain and of the crates' sources in /usr/local/lib/raylab (hard
+#     links where the file system allows), and nothing else: the autograder's source, where the
+#     judge, the snapshots and the hidden checks are, is root's alone;
 #  3. builds the grader and grades the reference once (the judge as root, the student's side as
 #     {USER}), so that grading a submission rebuilds only the lectures it changes.
 set -euo pipefail
@@ -367,8 +369,12 @@ else
   source "$HOME/.cargo/env"
 fi
 
-# 2. The grading user, and what it may read.
-id "$USER_NAME" > /dev/null 2>&1 || useradd --system --no-create-home --shell /usr/sbin/nologin "$USER_NAME"
+# 2. The grading users, and what they may read.
+USERS="$USER_NAME"
+for n in $(seq 2 "$(nproc)"); do USERS="$USERS,$USER_NAME-$n"; done
+for user in ${USERS//,/ }; do
+  id "$user" > /dev/null 2>&1 || useradd --system --no-create-home --shell /usr/sbin/nologin "$user"
+done
 share() { # share FROM TO: a read-only copy owned by root, hard-linked where possible
   rm -rf "$2"
   mkdir -p "$(dirname "$2")"
@@ -387,8 +393,8 @@ if [ -d "$REGISTRY" ] && [ ! -d "$SHARED/cargo/registry" ]; then
   share "$REGISTRY" "$SHARED/cargo/registry"
 fi
 mkdir -p "$SHARED/cargo"
-printf 'export PATH="%s:$PATH"\nexport CARGO_HOME="%s"\nexport CARGO_NET_OFFLINE=true\n' \
-  "$TOOLCHAIN_BIN" "$SHARED/cargo" > "$SHARED/env"
+printf 'export PATH="%s:$PATH"\nexport CARGO_HOME="%s"\nexport CARGO_NET_OFFLINE=true\nexport RAYLAB_USERS="%s"\n' \
+  "$TOOLCHAIN_BIN" "$SHARED/cargo" "$USERS" > "$SHARED/env"
 # The crates' sources: fetched once here (the student's builds are offline).
 PATH="$TOOLCHAIN_BIN:$PATH" CARGO_HOME="$SHARED/cargo" cargo fetch --locked --manifest-path "$SOURCE/Cargo.toml"
 chmod -R a+rX "$SHARED"
@@ -399,7 +405,7 @@ chmod o+x "$AUTOGRADER"
 source "$SHARED/env"
 cd "$SOURCE"
 cargo build -p grader
-./target/debug/grader grade --submission "$SOURCE" --workdir "$AUTOGRADER/work" --run-as "$USER_NAME" \
+./target/debug/grader grade --submission "$SOURCE" --workdir "$AUTOGRADER/work" --run-as "$RAYLAB_USERS" \
   --strict --format json -o /tmp/raylab-reference.json
 echo "setup: the reference scores full marks"
 "#;
@@ -407,14 +413,14 @@ echo "setup: the reference scores full marks"
 /// Gradescope runs this for each submission.
 const RUN_AUTOGRADER: &str = r#"#!/usr/bin/env bash
 # raylab autograder: grades /autograder/submission (only its lectures/*/src is read) with the
-# hidden checks, the student's code built and run as {USER} (setup.sh), and writes
+# hidden checks, the student's code built and run as {USER} and its siblings (setup.sh), and writes
 # /autograder/results/results.json.
 set -uo pipefail
 source /usr/local/lib/raylab/env
 mkdir -p /autograder/results
 cd /autograder/source
 if ! ./target/debug/grader grade --submission /autograder/submission --workdir /autograder/work \
-    --run-as {USER} --format gradescope -o /autograder/results/results.json 2> /tmp/grader.err; then
+    --run-as "$RAYLAB_USERS" --format gradescope -o /autograder/results/results.json 2> /tmp/grader.err; then
   if [ ! -s /autograder/results/results.json ]; then
     python3 -c '
 import json

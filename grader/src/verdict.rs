@@ -9,7 +9,7 @@ use crate::run::Ran;
 use raylab_protocol::Outcome;
 pub use raylab_protocol::{Failure, Info, Kind};
 
-/// The verdicts of DESIGN.md, and "blocked".
+/// The verdicts a check can have (ARCHITECTURE.md, "How the grader grades").
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Status {

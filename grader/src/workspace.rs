@@ -103,6 +103,18 @@ impl Workspace {
         self.lectures.iter().find(|l| l.package == package)
     }
 
+    /// Lecture `number`'s exercises in course order: the function column of the "## Exercises"
+    /// table of its README (the order its chapter's table repeats, tested, and the order the
+    /// grade reads in and `next:` follows). Empty when the README has no such table.
+    pub fn exercise_order(&self, number: &str) -> Vec<String> {
+        let Some(lecture) = self.lecture(number) else { return Vec::new() };
+        let readme = self.root.join("lectures").join(&lecture.folder).join("README.md");
+        std::fs::read_to_string(readme)
+            .ok()
+            .and_then(|t| exercise_table(&t, "## Exercises"))
+            .unwrap_or_default()
+    }
+
     /// `number` and every lecture that uses it, directly or not.
     pub fn dependents(&self, number: &str) -> BTreeSet<String> {
         let mut found = BTreeSet::from([number.to_owned()]);
@@ -193,6 +205,39 @@ fn lecture_number(name: &str) -> Option<String> {
     let number: String = digits.chars().take(2).collect();
     (number.len() == 2 && number.chars().all(|c| c.is_ascii_digit()) && digits[2..].starts_with('-'))
         .then_some(number)
+}
+
+/// The functions named in the first column headed "function" (or "exercise") of the table under
+/// the first heading starting with `heading`, in the table's order, each once: backquoted names
+/// before " — ", parenthesised notes left out.
+pub fn exercise_table(text: &str, heading: &str) -> Option<Vec<String>> {
+    let after = &text[text.find(heading)?..];
+    let rows: Vec<&str> =
+        after.lines().skip_while(|l| !l.starts_with('|')).take_while(|l| l.starts_with('|')).collect();
+    let cells = |row: &str| -> Vec<String> {
+        row.trim().trim_matches('|').split('|').map(|c| c.trim().to_owned()).collect()
+    };
+    let header = cells(rows.first()?);
+    let column = header.iter().position(|h| ["function", "exercise"].contains(&h.to_lowercase().as_str()))?;
+    let mut names: Vec<String> = Vec::new();
+    for row in rows.iter().skip(2) {
+        let mut cell = cells(row).get(column)?.split(" — ").next()?.to_owned();
+        // Parenthesised notes ("(§1.2)", "(the body of `trace`)", "(p, n, dir, from)") are no names.
+        while let (Some(open), Some(close)) = (cell.find('('), cell.find(')')) {
+            if close < open {
+                break;
+            }
+            cell.replace_range(open..=close, "");
+        }
+        for quoted in cell.split('`').skip(1).step_by(2) {
+            let name: String =
+                quoted.chars().take_while(|c| c.is_alphanumeric() || *c == '_' || *c == ':').collect();
+            if !names.contains(&name) {
+                names.push(name);
+            }
+        }
+    }
+    Some(names)
 }
 
 #[cfg(test)]

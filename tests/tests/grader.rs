@@ -69,12 +69,9 @@ fn the_checks_and_the_exercises_name_each_other(grade: &Value) {
             format!("{}/{}", c["info"]["lecture"].as_str().unwrap(), c["info"]["exercise"].as_str().unwrap())
         })
         .collect();
-    // Lecture 02's three images are checked by the geometry image checks (`02/geometry/*`
-    // compares the id, depth and normal images a student's functions make), not by a check
-    // under their own name.
-    let by_geometry = ["02/depth_image", "02/normal_image", "02/object_id_image"];
-    let unchecked: Vec<_> =
-        exercises.difference(&checked).filter(|e| !by_geometry.contains(&e.as_str())).collect();
+    // Every exercise is graded under its own name (lecture 02's three images too: a bug in
+    // object_id_image is named there, not on closest_hit).
+    let unchecked: Vec<_> = exercises.difference(&checked).collect();
     let no_exercise: Vec<_> = checked.difference(&exercises).collect();
     assert!(unchecked.is_empty(), "exercises without a check: {unchecked:?}");
     assert!(no_exercise.is_empty(), "checks of no exercise: {no_exercise:?}");
@@ -534,15 +531,81 @@ struct Mistake {
 #[derive(serde::Deserialize)]
 struct Catalogue {
     mistake: Vec<Mistake>,
+    /// Right answers written another way (as the book writes them): they must pass.
+    #[serde(default)]
+    accepted: Vec<Accepted>,
 }
 
-fn catalogue() -> Vec<Mistake> {
+/// One `[[accepted]]` entry of `tests/mistakes/*.toml`.
+#[derive(serde::Deserialize)]
+struct Accepted {
+    name: String,
+    file: String,
+    find: String,
+    replace: String,
+}
+
+fn accepted() -> Vec<Accepted> {
+    catalogue_files()
+        .iter()
+        .flat_map(|f| {
+            let text = std::fs::read_to_string(f).unwrap();
+            toml::from_str::<Catalogue>(&text).unwrap_or_else(|e| panic!("{}: {e}", f.display())).accepted
+        })
+        .collect()
+}
+
+/// Each accepted answer applied alone: every check of its lecture passes, graded as a
+/// submission, and so do the lecture's own tests, run in the work folder it was graded in (a
+/// lecture's test stricter than its checks would fail here).
+#[test]
+fn every_accepted_answer_passes_the_lectures_checks_and_its_tests() {
+    let _turn = WORK.lock().unwrap_or_else(|e| e.into_inner());
+    let answers = accepted();
+    assert!(answers.len() >= 2, "{} accepted answers", answers.len());
+    let mut refused = Vec::new();
+    for a in answers {
+        let text = std::fs::read_to_string(root().join(&a.file)).unwrap();
+        assert_eq!(
+            text.matches(&a.find).count(),
+            1,
+            "{}: the find text must occur once in {}",
+            a.name,
+            a.file
+        );
+        let lecture = a.file.split('/').nth(1).unwrap()[..2].to_owned();
+        let dir = submission("accepted", &[(&a.file, &a.find, &a.replace)]);
+        let (grade, stderr) = grade_submission(&dir, &[&lecture], "accepted.json");
+        for check in checks(&grade).iter().filter(|c| c["info"]["lecture"] == lecture.as_str()) {
+            if check["status"] != "passed" {
+                refused.push(format!(
+                    "{}: {} {} ({})\n{stderr}",
+                    a.name, check["info"]["id"], check["status"], check["summary"]
+                ));
+            }
+        }
+        let package = format!("l{}", a.file.split('/').nth(1).unwrap());
+        let work = scratch().join("work");
+        let (stdout, stderr, ok) =
+            cargo(&work, &["test", "-q", "-p", &package, "--lib"], Some(&scratch().join("accepted-target")));
+        if !ok {
+            refused.push(format!("{}: the lecture's own tests fail:\n{stdout}\n{stderr}", a.name));
+        }
+    }
+    assert!(refused.is_empty(), "right answers refused:\n{}", refused.join("\n"));
+}
+
+fn catalogue_files() -> Vec<PathBuf> {
     let dir = root().join("tests/mistakes");
     let mut files: Vec<PathBuf> = std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().path()).collect();
     files.sort();
+    files.retain(|f| f.extension().is_some_and(|e| e == "toml"));
     files
+}
+
+fn catalogue() -> Vec<Mistake> {
+    catalogue_files()
         .iter()
-        .filter(|f| f.extension().is_some_and(|e| e == "toml"))
         .flat_map(|f| {
             let text = std::fs::read_to_string(f).unwrap();
             toml::from_str::<Catalogue>(&text).unwrap_or_else(|e| panic!("{}: {e}", f.display())).mistake
@@ -812,3 +875,158 @@ Twice a vector is the vector scaled by two.
 |---|---|---|
 | 1 | `src/lib.rs` | `twice` (§11.1) |
 ";
+
+/// What the student's documents name exists in the handout: the book, the student README and
+/// the lectures' READMEs, read as the handout has them. A test name cited (a backquoted name of
+/// four words or more, `exactly_tangent_ray_hits_once_or_misses_never_nan`) is in its sources; a
+/// file path (`src/offset.rs`, `crates/raylab/SCENES.md`) is a file of the handout, of a lecture
+/// or of the book; a `grader` command's subcommand and flags are the handout's grader's. And no
+/// instructor command is among them.
+#[test]
+fn what_the_students_documents_name_exists_in_the_handout() {
+    let dir = scratch().join("docs-handout");
+    let out =
+        Command::new(grader_binary()).args(["handout", "--force", dir.to_str().unwrap()]).output().unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let problems = documents_problems(&dir);
+    assert!(
+        problems.is_empty(),
+        "the student's documents name what the handout lacks:\n{}",
+        problems.join("\n")
+    );
+    // Planted drifts are found: a test that is not there, a moved file, a flag the grader lacks,
+    // an instructor's command.
+    let planted = dir.join("lectures/02-ray-casting/README.md");
+    let text = std::fs::read_to_string(&planted).unwrap();
+    std::fs::write(
+        &planted,
+        format!(
+            "{text}\nSee `grazing_ray_hits_once_or_twice` and `src/testing.rs`.\n\n```sh\ncargo run -p grader -- \
+             render X --no-such-flag\ncargo run -p grader -- bless\n```\n"
+        ),
+    )
+    .unwrap();
+    let found = documents_problems(&dir).join("\n");
+    for drift in ["grazing_ray_hits_once_or_twice", "src/testing.rs", "--no-such-flag", "bless"] {
+        assert!(found.contains(drift), "the planted {drift} is not found:\n{found}");
+    }
+}
+
+/// Every name the student's documents in `handout` cite that the handout lacks, as `file: what`.
+fn documents_problems(handout: &Path) -> Vec<String> {
+    let read_all = |dir: &Path, ext: &str| -> Vec<(PathBuf, String)> {
+        let mut found = Vec::new();
+        let mut stack = vec![dir.to_owned()];
+        while let Some(d) = stack.pop() {
+            for entry in std::fs::read_dir(&d).into_iter().flatten().flatten() {
+                let path = entry.path();
+                if path.is_dir() && !path.ends_with("target") && !path.ends_with("book/book") {
+                    stack.push(path);
+                } else if path.extension().is_some_and(|e| e == ext) {
+                    found.push((path.clone(), std::fs::read_to_string(&path).unwrap_or_default()));
+                }
+            }
+        }
+        found
+    };
+    let sources: String = read_all(handout, "rs").into_iter().map(|(_, t)| t).collect();
+    let grader_sources: String =
+        read_all(&handout.join("grader/src"), "rs").into_iter().map(|(_, t)| t).collect();
+    let mut documents: Vec<(PathBuf, String)> = read_all(&handout.join("book/src"), "md");
+    documents.extend(read_all(&handout.join("lectures"), "md"));
+    documents.push((handout.join("README.md"), std::fs::read_to_string(handout.join("README.md")).unwrap()));
+    // The commands of the instructors' (in the handout's grader or not): no student document names them.
+    let instructors = ["handout", "bless", "grade", "gradescope", "tradeoffs", "dev"];
+    let placeholder = |t: &str| {
+        ["NN", "NAME", "SCENE", "FILE", "DIR", "*", "…", "X.", "MESH"].iter().any(|p| t.contains(p))
+    };
+    let mut problems = Vec::new();
+    for (path, text) in &documents {
+        let shown = path.strip_prefix(handout).unwrap_or(path).display().to_string();
+        // A lecture's README, or its chapter, names the lecture's files from its folder.
+        let own_lecture = if shown.starts_with("lectures/") {
+            path.parent().map(Path::to_owned)
+        } else {
+            let stem = path.file_stem().unwrap_or_default();
+            Some(handout.join("lectures").join(stem)).filter(|l| l.is_dir())
+        };
+        // Inline code spans and the lines of code blocks.
+        let mut spans: Vec<String> = text.split('`').skip(1).step_by(2).map(str::to_owned).collect();
+        let mut in_block = false;
+        for line in text.lines() {
+            if line.trim_start().starts_with("```") {
+                in_block = !in_block;
+            } else if in_block {
+                spans.push(line.to_owned());
+            }
+        }
+        for span in &spans {
+            let token = span.trim();
+            // A test's or a function's name of four words or more.
+            let words = token.split('_').count();
+            // (MIT 6.837's scene files, `scene6_16_wood_cubes`, are data, not sources.)
+            let scene_file =
+                token.starts_with("scene") && token[5..].starts_with(|c: char| c.is_ascii_digit());
+            if words >= 4
+                && !scene_file
+                && token.chars().all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '_')
+                && !sources.contains(token)
+            {
+                problems.push(format!("{shown}: `{token}` is in no source of the handout"));
+            }
+            // A file path.
+            let is_path = !token.contains(' ')
+                && token.contains('/')
+                && [".rs", ".toml", ".md", ".png", ".obj", ".exr", ".txt"].iter().any(|e| token.ends_with(e))
+                && !token.starts_with("http")
+                && !placeholder(token);
+            if is_path {
+                let exists = handout.join(token).exists()
+                    || handout.join("book/src").join(token).exists()
+                    || own_lecture.as_ref().is_some_and(|l| l.join(token).exists());
+                if !exists {
+                    problems.push(format!("{shown}: `{token}` is no file of the handout"));
+                }
+            }
+            // A grader command: its subcommand and its flags.
+            if let Some(rest) = token.split_once("-p grader -- ").map(|(_, r)| r) {
+                let rest = rest.split('#').next().unwrap_or_default();
+                let mut words = rest.split_whitespace();
+                if let Some(first) = words.next() {
+                    let is_selection = first.chars().next().is_some_and(|c| c.is_ascii_digit());
+                    let variant: String = first
+                        .split('-')
+                        .map(|w| {
+                            w.chars()
+                                .next()
+                                .map(|c| c.to_ascii_uppercase().to_string() + &w[1..])
+                                .unwrap_or_default()
+                        })
+                        .collect();
+                    let is_flag = first.starts_with("--");
+                    if instructors.contains(&first) {
+                        problems.push(format!("{shown}: `grader {first}` is an instructor's command"));
+                    } else if !is_selection
+                        && !is_flag
+                        && !grader_sources.contains(&format!("    {variant} "))
+                        && !grader_sources.contains(&format!("    {variant},"))
+                    {
+                        problems
+                            .push(format!("{shown}: `grader {first}` is no command of the handout's grader"));
+                    }
+                }
+                for flag in rest.split_whitespace().filter(|w| w.starts_with("--") && w.len() > 2) {
+                    let name = flag.trim_start_matches('-').split('=').next().unwrap_or_default();
+                    if !grader_sources.contains(&name.replace('-', "_"))
+                        && !sources.contains(&format!("\"{name}\""))
+                    {
+                        problems.push(format!("{shown}: `{flag}` is no flag of the handout's grader"));
+                    }
+                }
+            }
+        }
+    }
+    problems.sort();
+    problems.dedup();
+    problems
+}

@@ -173,16 +173,20 @@ pub fn close3(
     ensure(ok, case, format!("{} (± {tolerance:.1e} each)", vec3(expected)), vec3(got), cause)
 }
 
-/// A number printed for a student: four decimals, or scientific when tiny or huge.
+/// A number printed for a student: four decimals, or scientific when tiny or huge, where that
+/// names the number exactly; else every digit it takes (the shortest text that reads back as
+/// it). So two numbers that differ never print alike: a failure one ulp off reads
+/// "expected 0.7708, got 0.77083325", not "0.7708" twice.
 pub fn num(x: Float) -> String {
     let a = x.abs();
-    if x == 0.0 || (1e-3..1e6).contains(&a) {
+    let short = if x == 0.0 || (1e-3..1e6).contains(&a) {
         format!("{x:.4}")
     } else if x.is_finite() {
         format!("{x:.4e}")
     } else {
-        format!("{x}")
-    }
+        return format!("{x}");
+    };
+    if short.parse::<Float>().is_ok_and(|y| y == x) { short } else { format!("{x:?}") }
 }
 
 /// A vector printed for a student.
@@ -255,5 +259,22 @@ mod tests {
         assert_eq!((e.expected.as_str(), e.got.as_str()), ("1.0000 (± 1.0e-6)", "NaN"));
         assert_eq!(num(1.0e-5), "1.0000e-5");
         assert_eq!(num(-2.5), "-2.5000");
+    }
+
+    /// Two numbers that differ never print alike: one ulp apart, each gets the digits it takes
+    /// (`10/render_supersampled/unit` once read "expected 0.7708, got 0.7708").
+    #[test]
+    fn numbers_one_ulp_apart_print_apart_and_plain_ones_stay_plain() {
+        for x in [0.770_833_3 as Float, 1.0, 1.0e-5, 3.0e7, -2.5, 0.65] {
+            let (below, above) = (x.next_down(), x.next_up());
+            assert_ne!(num(below), num(x), "{x}");
+            assert_ne!(num(above), num(x), "{x}");
+            for y in [below, x, above] {
+                assert_eq!(num(y).parse::<Float>().unwrap(), y, "{} reads back", num(y));
+            }
+        }
+        assert_eq!(num(0.65), "0.6500");
+        assert_eq!(num(1.0), "1.0000");
+        assert_eq!(num(Float::INFINITY), "inf");
     }
 }

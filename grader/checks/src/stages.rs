@@ -1,6 +1,6 @@
 //! The stages: how lecture N's scenes are drawn with the kit and the lectures
 //! up to N, nothing later, so a student sees each lecture's pictures as soon
-//! as that lecture is done (DESIGN.md's third promise, "model only what a
+//! as that lecture is done (the course's third promise, "model only what a
 //! scene requires", applied to grading). Book: "What you should see" in each
 //! chapter.
 //!

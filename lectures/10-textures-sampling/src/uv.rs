@@ -107,11 +107,15 @@ mod tests {
     fn sphere_poles_have_v_zero_and_one() {
         // atan2(±1, 0) = ±π/2 → v = ½ ± ½, exactly (π/2 over π is ½ in floats). The longitude
         // of a pole is atan2(∓0, ±0): −0 → u = ½ for (0, 1, 0), but π → u = 1 for −Y = (−0,
-        // −1, −0); any u is right there, as long as it is in [0, 1].
-        assert_eq!(sphere_uv(Vec3::Y), Vec2::new(0.5, 1.0));
-        assert_eq!(sphere_uv(Vec3::new(0.0, -1.0, 0.0)), Vec2::new(0.5, 0.0));
-        let south = sphere_uv(-Vec3::Y);
-        assert!(south.y == 0.0 && (0.0..=1.0).contains(&south.x), "{south}");
+        // −1, −0); any u is right there, as long as it is in [0, 1] (Book §10.1; the check
+        // asks no more).
+        for (pole, v) in [(Vec3::Y, 1.0), (Vec3::new(0.0, -1.0, 0.0), 0.0), (-Vec3::Y, 0.0)] {
+            let uv = sphere_uv(pole);
+            assert!(
+                uv.y == v && (0.0..=1.0).contains(&uv.x),
+                "pole {pole}: {uv}; v must be exactly {v}, and u anything in [0, 1]"
+            );
+        }
     }
 
     #[test]
@@ -147,8 +151,9 @@ mod tests {
     #[test]
     fn sphere_uv_is_finite_slightly_off_the_sphere_and_at_zero() {
         // A pole 1 ulp outside the sphere (acos(−y) would be NaN there) and the zero vector.
-        let outside = v3(0.0, -(1.0 as Float).next_up(), 0.0);
-        assert_eq!(sphere_uv(outside), Vec2::new(0.5, 0.0));
+        // At the pole u may be anything in [0, 1] (Book §10.1); v is 0 and nothing is NaN.
+        let outside = sphere_uv(v3(0.0, -(1.0 as Float).next_up(), 0.0));
+        assert!(outside.y == 0.0 && (0.0..=1.0).contains(&outside.x), "{outside}: v must be 0, u in [0, 1]");
         assert_eq!(sphere_uv(Vec3::ZERO), Vec2::new(0.5, 0.5));
     }
 

@@ -4,7 +4,7 @@
 //!
 //! The mesh is an OBJ file read by the kit, or the kit's torus with about N
 //! triangles (`--generated N`). One ray per pixel through the pixel centre,
-//! from lecture 01's [`PerspectiveCamera`] (DESIGN.md's conventions: sx =
+//! from lecture 01's [`PerspectiveCamera`] (the book's conventions, §0: sx =
 //! 2(x + ½)/w − 1, sy = 1 − 2(y + ½)/h, aspect = w/h). The rays are made
 //! before the clock starts, as the Embree script makes them in numpy before
 //! it times `run`; the clock covers only the closest-hit queries. Book: §9.10

@@ -27,12 +27,25 @@ declare_checks! {
         "three spheres in scrambled order: the nearest wins and its index is the object id",
     )
     .needs(&["02/hit_sphere_stable"]) => closest_of_three(),
+    Meta::unit(
+        "object_id_image",
+        "a 7 × 5 image of a scene the check answers: one ray per pixel in the camera's range, id colours, black misses",
+    )
+    .needs(CAMERA) => object_id_cases(),
+    Meta::unit("depth_image", "the same scene: each pixel the hit's t, black misses").needs(CAMERA) => depth_cases(),
+    Meta::unit("normal_image", "the same scene: each pixel the hit's normal as it comes, black misses")
+        .needs(CAMERA) => normal_cases(),
 }
+
+/// The camera the image checks ask for their pixels' rays (lecture 01's).
+const CAMERA: &[&str] = &["01/look_at", "01/screen_coords", "01/PerspectiveCamera::generate_ray"];
 
 #[cfg(feature = "l02")]
 mod common;
 #[cfg(feature = "l02")]
 mod group;
+#[cfg(feature = "l02")]
+mod images;
 #[cfg(feature = "l02")]
 mod plane;
 #[cfg(feature = "l02")]
@@ -41,7 +54,7 @@ mod sphere;
 /// What the rows above run: the checks of each of the lecture's files.
 #[cfg(feature = "l02")]
 mod code {
-    pub(super) use super::{common::*, group::*, plane::*, sphere::*};
+    pub(super) use super::{common::*, group::*, images::*, plane::*, sphere::*};
 }
 
 #[cfg(all(test, feature = "l02"))]

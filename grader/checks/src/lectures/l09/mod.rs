@@ -59,6 +59,12 @@ declare_checks! {
         "rays from inside a closed icosphere at its every vertex and edge: each hits, as brute force does",
     )
     .needs(BVH_NEEDS) => shared_edges(|bvh, r, range| bvh.closest_hit(r, range)),
+    Meta::extreme(
+        "Bvh::closest_hit",
+        "nearest-first",
+        "a row of 200 spheres, down it and up it: the nearest found in at most two leaves' tests",
+    )
+    .needs(BVH_NEEDS) => nearest_first(|bvh, r, range| bvh.closest_hit(r, range)),
     Meta::unit("Bvh::any_hit", "true exactly when brute force finds a hit: random rays and ranges, blockers beyond the range")
         .needs(BVH_NEEDS) => any_cases(|bvh, r, range| bvh.any_hit(r, range)),
 }

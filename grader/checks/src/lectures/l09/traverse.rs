@@ -171,6 +171,49 @@ pub(super) fn closest_cases(closest: ClosestFn) -> CheckResult {
     Ok(format!("3 row rays; {hits} of {} random rays hit, all as brute force", rays.len()))
 }
 
+pub(super) fn nearest_first(closest: ClosestFn) -> CheckResult {
+    // 200 spheres r = 0.5 at z = −2k, k = 1..=200, spanning t ∈ [2k − 0.5, 2k + 0.5] down −z from
+    // the origin: the nearest at t = 1.5, in the first leaf a nearest-first traversal reaches. Its
+    // hit drops every child that starts beyond t = 1.5, so at most two leaves are tested (the
+    // leaf's box may reach past the hit's sphere into the next). The same row from its far end,
+    // up +z from z = −401.5 − 1: a traversal that visits children in a fixed order (the slots',
+    // the build's) is far first along one of the two.
+    let row: Vec<Object> = (1..=200).map(|k| sphere(v(0.0, 0.0, -2.0 * k as Float), 0.5, 0)).collect();
+    let rays = [
+        (Ray::new(Vec3::ZERO, -Vec3::Z), 0, "down −z from the origin"),
+        (Ray::new(v(0.0, 0.0, -402.0), Vec3::Z), 199, "up +z from z = −402"),
+    ];
+    let answers: Vec<(Option<Hit>, u64)> = student(|| {
+        let bvh = Bvh::build(&row);
+        rays.iter()
+            .map(|(r, ..)| {
+                let (hit, stats) = raylab::stats::measure(|| closest(&bvh, r, Interval::POSITIVE));
+                (hit, stats.get(raylab::stats::Counter::IntersectionTests))
+            })
+            .collect()
+    });
+    let most = 2 * l09_acceleration::MAX_LEAF as u64;
+    for ((_, object, along), (hit, tests)) in rays.iter().zip(&answers) {
+        let case = format!("200 spheres r = 0.5 at z = −2k, k = 1..=200, a ray {along}");
+        ensure(
+            hit.is_some_and(|h| h.object == *object && h.t == 1.5),
+            &case,
+            format!("object {object} at t = 1.5"),
+            show_hit(hit),
+            "the closest hit: visit every child whose box the ray meets, keep the nearest hit",
+        )?;
+        ensure(
+            *tests <= most,
+            &case,
+            format!("at most {most} intersection tests (two leaves of {})", l09_acceleration::MAX_LEAF),
+            format!("{tests} tests"),
+            "visit the nearer child first (sort the children met by the t where the ray enters their box, \
+             push the farther ones), and drop a waiting child that starts beyond the closest hit so far",
+        )?;
+    }
+    Ok(format!("{} and {} intersection tests along the row", answers[0].1, answers[1].1))
+}
+
 pub(super) fn shared_edges(closest: ClosestFn) -> CheckResult {
     // From inside the closed icosphere (its centre, and off-centre), rays aimed exactly at each
     // vertex and at points of each edge (midpoint, 0.1 and 0.7 along): with watertight
@@ -466,5 +509,11 @@ mod tests {
         // An unwidened box test in the traversal leaks nothing here or picks the same triangle:
         // the edge check passes a correct recursive traversal.
         assert!(shared_edges(closest_ok).is_ok());
+        // The faithful traversal visits the children in slot order: right answers, far first
+        // along one of the two rays (lecture 09's own test of the same row caught it, the checks
+        // did not). The reference visits the nearer child first.
+        caught(nearest_first(closest_ok), "visit the nearer child first");
+        let reference = nearest_first(|b, r, range| b.closest_hit(r, range));
+        assert!(reference.is_ok(), "{reference:?}");
     }
 }
