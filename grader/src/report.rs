@@ -141,7 +141,9 @@ fn images_row(body: &mut String, ws: &Workspace, v: &Verdict, out: &Path) {
         |i| format!("{:.4} ({:.2} % of pixels over 0.25)", i.flip_mean, 100.0 * i.flip_fraction_over),
     );
     let folder = ws.lecture(scene_lecture).map_or_else(String::new, |l| l.folder.clone());
-    let scene = format!("lectures/{folder}/scenes/{scene_name}.toml");
+    // The command a click shows draws with the stage that drew this picture: the check's lecture's
+    // (the final pictures' is lecture 10's, the complete tracer).
+    let scene = format!("lectures/{folder}/scenes/{scene_name}.toml --stage {}", v.info.lecture);
     let tree = std::fs::read_to_string(scene_dir.join("tree.txt")).unwrap_or_default();
     let _ = writeln!(
         body,

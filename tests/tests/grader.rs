@@ -486,8 +486,73 @@ fn each_week_grades_its_lectures_images_included() {
             "{name}: {} checks, {images} image checks of lectures ≤ {week} passed",
             checks(&grade).len()
         );
+        if !broken_next {
+            problems.extend(render_at_week(week, &lectures));
+        }
     }
     assert!(problems.is_empty(), "{}", problems.join("\n"));
+}
+
+/// `grader render` at week `week`, as the student runs it (the render tool of the checks binary
+/// just built for the week, in the work folder): a scene of lecture `week` draws by its stage,
+/// with a pixel's rays printed and written as a 3D view; a scene of the next lecture says which
+/// exercise it waits for, with no panic.
+fn render_at_week(week: usize, lectures: &[String]) -> Vec<String> {
+    let work = scratch().join("work");
+    let binary = work.join("target/debug/raylab-checks");
+    let first_scene = |lecture: &str| {
+        let mut scenes: Vec<PathBuf> = std::fs::read_dir(work.join("lectures").join(lecture).join("scenes"))
+            .unwrap()
+            .map(|e| e.unwrap().path())
+            .filter(|p| p.extension().is_some_and(|e| e == "toml"))
+            .collect();
+        scenes.sort();
+        scenes.remove(0)
+    };
+    let render = |scene: &Path, extra: &[&str]| {
+        let image = scratch().join(format!("week-{week}.png"));
+        let _ = std::fs::remove_file(&image);
+        let out = Command::new(&binary)
+            .current_dir(&work)
+            .arg("render")
+            .arg(scene)
+            .arg("-o")
+            .arg(&image)
+            .args(extra)
+            .output()
+            .unwrap();
+        (out, image)
+    };
+    let mut problems = Vec::new();
+    let own = first_scene(&lectures[week - 1]);
+    let view = scratch().join(format!("week-{week}.html"));
+    let _ = std::fs::remove_file(&view);
+    let (out, image) = render(&own, &["--tree", "20,20", "--view", view.to_str().unwrap()]);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    if !out.status.success() || !image.is_file() || !view.is_file() || !stdout.starts_with("pixel (20, 20)") {
+        problems.push(format!(
+            "week {week}: render {} --tree 20,20 --view: {:?}, image {}, view {}\n{stdout}{}",
+            own.display(),
+            out.status,
+            image.is_file(),
+            view.is_file(),
+            String::from_utf8_lossy(&out.stderr)
+        ));
+    }
+    if let Some(next) = lectures.get(week) {
+        let scene = first_scene(next);
+        let (out, image) = render(&scene, &[]);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        let said = stderr.contains("which is not started yet") && !stderr.contains("panicked");
+        if out.status.success() || image.exists() || !said {
+            problems.push(format!(
+                "week {week}: render {} (the next lecture's): {:?}\n{stderr}",
+                scene.display(),
+                out.status
+            ));
+        }
+    }
+    problems
 }
 
 /// Lecture 01's camera wrong and lecture 02 right: `grader 02` (which grades 02 alone) says

@@ -179,17 +179,19 @@ pub fn render(lecture: &str, scene: &Scene) -> Result<Image, String> {
 }
 
 /// The intersector stage `lecture` finds the closest hits with: 02's group, 03's shapes, 04's
-/// brute force (stages 04–07), 09's choice of hierarchy; `None` at the other stages or where it
+/// brute force (stages 04–08), 09's choice of hierarchy; `None` at the other stages or where it
 /// is not built.
 #[allow(unused_variables)]
-fn intersector<'a>(lecture: &str, scene: &'a Scene) -> Option<Box<dyn raylab::Intersector + 'a>> {
+pub fn intersector<'a>(lecture: &str, scene: &'a Scene) -> Option<Box<dyn raylab::Intersector + 'a>> {
     match lecture {
         #[cfg(feature = "l02")]
         "02" => Some(Box::new(l02_ray_casting::Group::new(&scene.objects))),
         #[cfg(feature = "l03")]
         "03" => Some(Box::new(crate::scene_objects::Lecture03(&scene.objects))),
         #[cfg(feature = "l04")]
-        "04" | "05" | "06" | "07" => Some(Box::new(l04_quadrics_transforms::BruteForce::new(&scene.objects))),
+        "04" | "05" | "06" | "07" | "08" => {
+            Some(Box::new(l04_quadrics_transforms::BruteForce::new(&scene.objects)))
+        }
         #[cfg(feature = "l09")]
         "09" => Some(l09_acceleration::intersector_for(&scene.objects)),
         _ => None,
@@ -319,10 +321,15 @@ pub fn pixel_tree(stage: &str, scene: &Scene, (x, y): (u32, u32)) -> Option<Stri
 /// the camera's ray (01), its closest hit (02–07, 09; stages 05 and 06 shade inside 05's and 06's
 /// functions, which record nothing), and at 07 the mirror and refracted rays to the sky. `None`
 /// where the stage is not built.
-#[allow(unused_variables)]
 pub fn grid_trees(stage: &str, scene: &Scene) -> Option<Vec<crate::view3d::TreeNode>> {
+    trees(stage, scene, &crate::view3d::grid(scene.width, scene.height))
+}
+
+/// The ray trees of `pixels` at stage `stage`, as [`grid_trees`] makes them.
+#[allow(unused_variables)]
+pub fn trees(stage: &str, scene: &Scene, pixels: &[(u32, u32)]) -> Option<Vec<crate::view3d::TreeNode>> {
     use crate::view3d::{Kind, TreeNode};
-    let pixels = crate::view3d::grid(scene.width, scene.height);
+    let pixels = pixels.to_vec();
     #[cfg(feature = "l08")]
     if matches!(stage, "08" | "10") {
         return Some(traced(stage, scene, &pixels)?.iter().map(|(_, tree)| tree.into()).collect());

@@ -1,6 +1,6 @@
 //! `grader render --tree X,Y` prints the ray tree of one pixel: a snapshot of a
-//! glass sphere's pixel (lecture 07's scene; lecture 08 snapshots two pixels of
-//! its own Whitted scene).
+//! glass sphere's pixel (lecture 07's scene, drawn by the complete tracer,
+//! `--stage 10`; lecture 08 snapshots two pixels of its own Whitted scene).
 
 use std::process::Command;
 
@@ -10,7 +10,16 @@ fn the_tree_of_a_glass_sphere_pixel_reads_as_the_ray_tree_of_the_slides() {
     let scene = root.join("lectures/07-reflection-refraction/scenes/glass-spheres.toml");
     let out_png = std::env::temp_dir().join(format!("raylab-tree-{}.png", std::process::id()));
     let out = Command::new(env!("CARGO_BIN_EXE_raylab-checks"))
-        .args(["render", scene.to_str().unwrap(), "--tree", "100,75", "-o", out_png.to_str().unwrap()])
+        .args([
+            "render",
+            scene.to_str().unwrap(),
+            "--stage",
+            "10",
+            "--tree",
+            "100,75",
+            "-o",
+            out_png.to_str().unwrap(),
+        ])
         .output()
         .expect("the grader runs");
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
@@ -21,6 +30,23 @@ fn the_tree_of_a_glass_sphere_pixel_reads_as_the_ray_tree_of_the_slides() {
     // end on the floor or in the background. Branches under 0.01 are not spawned.
     let stdout = String::from_utf8_lossy(&out.stdout);
     insta::assert_snapshot!("glass_sphere_pixel_100_75", stdout);
+    // Lecture 08's stage traces the same tree (no texture, no supersampling, brute force's hits
+    // are the hierarchy's): the command chapter 8 gives a student who has done lecture 08.
+    let staged = Command::new(env!("CARGO_BIN_EXE_raylab-checks"))
+        .args([
+            "render",
+            scene.to_str().unwrap(),
+            "--stage",
+            "08",
+            "--tree",
+            "100,75",
+            "-o",
+            out_png.to_str().unwrap(),
+        ])
+        .output()
+        .expect("the grader runs");
+    assert!(staged.status.success(), "{}", String::from_utf8_lossy(&staged.stderr));
+    assert_eq!(String::from_utf8_lossy(&staged.stdout), stdout);
 }
 
 /// `--view PAGE` writes the same tree in 3D: the page's data holds the text the snapshot above
@@ -37,7 +63,17 @@ fn the_3d_view_of_a_glass_sphere_pixel_holds_the_printed_tree_and_draws_it() {
     std::fs::create_dir_all(&dir).unwrap();
     let page = dir.join("view.html");
     let out = Command::new(env!("CARGO_BIN_EXE_raylab-checks"))
-        .args(["render", scene.to_str().unwrap(), "--tree", "100,75", "--view", page.to_str().unwrap(), "-o"])
+        .args([
+            "render",
+            scene.to_str().unwrap(),
+            "--stage",
+            "10",
+            "--tree",
+            "100,75",
+            "--view",
+            page.to_str().unwrap(),
+            "-o",
+        ])
         .arg(dir.join("out.png"))
         .output()
         .expect("the grader runs");

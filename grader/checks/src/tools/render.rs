@@ -1,6 +1,9 @@
-//! `grader render SCENE -o OUT.png`: any TOML or MIT 6.837 scene through the
-//! complete tracer, with the flags that override its `[render]` table, its
-//! AOVs, statistics and the ray tree of one pixel.
+//! `grader render SCENE -o OUT.png`: any TOML or MIT 6.837 scene, drawn by a
+//! stage (`--stage NN`: what lecture NN's pictures show, with the lectures up
+//! to NN only; by default the scene's own lecture's, else the complete tracer
+//! of stage 10, with the flags that override its `[render]` table), its AOVs,
+//! statistics and the ray tree of one pixel. An exercise not done yet is
+//! named, not a panic.
 
 use std::path::PathBuf;
 
@@ -72,7 +75,38 @@ pub struct RenderArgs {
     /// (`RAY_BUDGET` rays, `IMAGE_BUDGET` bytes of image).
     #[arg(long)]
     allow_large: bool,
+    /// The stage that draws, 01–10: what lecture NN's pictures show, with the lectures up to NN
+    /// only [default: the scene's own lecture's, for a scene of lectures/NN-*/scenes/; else 10,
+    /// the complete tracer]. Before 10 the complete tracer's flags (--depth, --spp, …) do not
+    /// apply.
+    #[arg(long, value_parser = parse_stage)]
+    stage: Option<String>,
 }
+
+/// A stage, `01` to the final one's.
+fn parse_stage(s: &str) -> Result<String, String> {
+    let ok = s.len() == 2 && s.chars().all(|c| c.is_ascii_digit()) && ("01"..=FINAL_STAGE).contains(&s);
+    if ok { Ok(s.to_owned()) } else { Err(format!("expected a stage from 01 to {FINAL_STAGE}, found {s:?}")) }
+}
+
+/// The stage a scene is drawn by when none is asked for: its lecture's, for a scene of
+/// `lectures/NN-*/scenes/` (what that lecture's pictures show, from the week it is done), else
+/// the complete tracer's. Chosen by where the scene is, not by what passes: the same command
+/// draws the same picture every week, and names what is missing when it cannot.
+fn own_stage(scene: &std::path::Path) -> String {
+    let path = scene.canonicalize().unwrap_or_else(|_| scene.to_owned());
+    let parts: Vec<String> =
+        path.components().map(|c| c.as_os_str().to_string_lossy().into_owned()).collect();
+    let lecture = parts.windows(4).rev().find_map(|w| match w {
+        [lectures, folder, scenes, _] if lectures == "lectures" && scenes == "scenes" => {
+            folder.get(..2).filter(|n| parse_stage(n).is_ok()).map(str::to_owned)
+        }
+        _ => None,
+    });
+    lecture.unwrap_or_else(|| FINAL_STAGE.to_owned())
+}
+
+use crate::stages::FINAL_STAGE;
 
 /// The most rays a render may cast without `--allow-large`: 2·10⁹, minutes of
 /// work on a laptop's cores (the lecture scenes cast under 10⁷, the 6.837
@@ -254,12 +288,25 @@ pub(crate) fn render_to_file(args: &RenderArgs) -> Result<(), String> {
         scene.width = w;
         scene.height = h;
     }
-    let settings = args.settings(&scene);
+    let stage = args.stage.clone().unwrap_or_else(|| own_stage(&args.scene));
+    if let Some((x, y)) = args.tree.filter(|(x, y)| *x >= scene.width || *y >= scene.height) {
+        return Err(format!("pixel ({x}, {y}) is outside the {}×{} image", scene.width, scene.height));
+    }
+    if stage == FINAL_STAGE {
+        until_todo(&stage, || traced(args, &scene))
+    } else {
+        until_todo(&stage, || staged(args, &scene, &stage))
+    }
+}
+
+/// The complete tracer's render (stage 10), with every flag.
+fn traced(args: &RenderArgs, scene: &Scene) -> Result<(), String> {
+    let settings = args.settings(scene);
     if !args.allow_large {
-        within_budget(&scene, ray_bound(&scene, &settings, args.sampling(&scene), args.aov))?;
+        within_budget(scene, ray_bound(scene, &settings, args.sampling(scene), args.aov))?;
     }
     if let Some(pixel) = args.tree {
-        let (color, tree) = shade::pixel_tree(&scene, pixel, &settings)?;
+        let (color, tree) = shade::pixel_tree(scene, pixel, &settings)?;
         println!(
             "pixel ({}, {}): colour ({:.3}, {:.3}, {:.3})\n{tree}",
             pixel.0, pixel.1, color.x, color.y, color.z
@@ -267,15 +314,143 @@ pub(crate) fn render_to_file(args: &RenderArgs) -> Result<(), String> {
         if let Some(file) = &args.view {
             let title =
                 format!("the ray tree of pixel ({}, {}) of {}", pixel.0, pixel.1, args.scene.display());
-            let mut view = crate::view3d::View::new(&scene, &title);
-            view.add_tree(&scene, "yours", pixel, &(&tree).into());
+            let mut view = crate::view3d::View::new(scene, &title);
+            view.add_tree(scene, "yours", pixel, &(&tree).into());
             std::fs::write(file, view.to_html()?).map_err(|e| format!("{}: {e}", file.display()))?;
         }
     }
-    let (image, stats) = shade::render_scene(&scene, args.aov, &settings, args.sampling(&scene))?;
+    let (image, stats) = shade::render_scene(scene, args.aov, &settings, args.sampling(scene))?;
+    write(args, &image, &stats)
+}
+
+/// The flags only the complete tracer reads, the first one given.
+fn tracer_flag(args: &RenderArgs) -> Option<&'static str> {
+    [
+        (args.depth.is_some(), "--depth"),
+        (args.weight.is_some(), "--weight"),
+        (args.samples.is_some(), "--samples"),
+        (args.spp.is_some(), "--spp"),
+        (args.pattern.is_some(), "--pattern"),
+        (args.filter.is_some(), "--filter"),
+        (args.no_shadows, "--no-shadows"),
+        (args.transparent_shadows, "--transparent-shadows"),
+        (args.fresnel, "--fresnel"),
+    ]
+    .into_iter()
+    .find_map(|(given, flag)| given.then_some(flag))
+}
+
+/// Stage `stage`'s render of `scene` (before the complete tracer): its picture, an AOV through
+/// its intersections, or a pixel's rays as it draws them.
+fn staged(args: &RenderArgs, scene: &Scene, stage: &str) -> Result<(), String> {
+    if let Some(flag) = tracer_flag(args) {
+        return Err(format!(
+            "{flag} sets the complete tracer (stage {FINAL_STAGE}); stage {stage} draws as lecture {stage}'s \
+             pictures do: leave {flag} out, or add --stage {FINAL_STAGE}"
+        ));
+    }
+    if !args.allow_large {
+        let settings = shade::scene_settings(scene);
+        within_budget(scene, ray_bound(scene, &settings, shade::scene_sampling(scene), args.aov))?;
+    }
+    if let Some(pixel) = args.tree {
+        let tree = crate::stages::trees(stage, scene, &[pixel])
+            .and_then(|mut trees| trees.pop())
+            .ok_or_else(|| format!("stage {stage} is not in this build"))?;
+        // Stage 08 traces as the complete tracer does, and prints as it prints; the earlier
+        // stages' rays have no colour of their own to print.
+        match crate::stages::pixel_tree(stage, scene, pixel) {
+            Some(traced) => println!("pixel ({}, {}): {traced}", pixel.0, pixel.1),
+            None => println!("pixel ({}, {}), stage {stage}:\n{tree}", pixel.0, pixel.1),
+        }
+        if let Some(file) = &args.view {
+            let title = format!(
+                "the rays of pixel ({}, {}) of {}, stage {stage}",
+                pixel.0,
+                pixel.1,
+                args.scene.display()
+            );
+            let mut view = crate::view3d::View::new(scene, &title);
+            view.add_tree(scene, "yours", pixel, &tree);
+            std::fs::write(file, view.to_html()?).map_err(|e| format!("{}: {e}", file.display()))?;
+        }
+    }
+    let (image, stats) = match args.aov {
+        None => {
+            let (image, stats) = raylab::stats::measure(|| crate::stages::render(stage, scene));
+            (image?, stats)
+        }
+        Some(aov) => {
+            let objects = crate::stages::intersector(stage, scene).ok_or_else(|| {
+                format!(
+                    "stage {stage} finds no hits (it draws the camera's rays): --aov needs stage 02 or later"
+                )
+            })?;
+            let camera = l01_transforms::Camera::from_scene(&scene.camera, scene.width, scene.height)
+                .map_err(|e| e.to_string())?;
+            let (w, h, objects) = (scene.width, scene.height, objects.as_ref());
+            raylab::stats::measure(|| match aov {
+                Aov::Id => l02_ray_casting::object_id_image(&camera, &objects, w, h),
+                Aov::Depth => l02_ray_casting::depth_image(&camera, &objects, w, h),
+                Aov::Normal => l02_ray_casting::normal_image(&camera, &objects, w, h),
+            })
+        }
+    };
+    write(args, &image, &stats)
+}
+
+/// Runs a render, turning a `todo!()` of an exercise not done yet into a message that names it
+/// and the stages that draw without it: a student renders from week 1 on, and a scene that
+/// needs more than the lectures done says so instead of panicking.
+fn until_todo(stage: &str, render: impl FnOnce() -> Result<(), String>) -> Result<(), String> {
+    use std::sync::{Arc, Mutex};
+    let place: Arc<Mutex<String>> = Arc::default();
+    let previous = std::panic::take_hook();
+    let seen = place.clone();
+    std::panic::set_hook(Box::new(move |info| {
+        if let (Ok(mut seen), Some(at)) = (seen.lock(), info.location()) {
+            *seen = format!("{}:{}", at.file(), at.line());
+        }
+    }));
+    let result = std::panic::catch_unwind(std::panic::AssertUnwindSafe(render));
+    std::panic::set_hook(previous);
+    let payload = match result {
+        Ok(rendered) => return rendered,
+        Err(payload) => payload,
+    };
+    let message = payload
+        .downcast_ref::<&str>()
+        .map(|s| (*s).to_owned())
+        .or_else(|| payload.downcast_ref::<String>().cloned())
+        .unwrap_or_default();
+    let place = place.lock().map(|p| p.clone()).unwrap_or_default();
+    // A stub's panic: "not yet implemented: NN/function: Book §N.M …".
+    let todo = message.strip_prefix("not yet implemented: ").and_then(|rest| rest.split(':').next());
+    match todo.filter(|id| id.len() > 3 && id.as_bytes()[2] == b'/') {
+        Some(id) => {
+            let (lecture, function) = id.split_at(2);
+            let earlier = if lecture > "01" && lecture <= stage {
+                format!(
+                    ", or draw it with the stage of a lecture before {lecture} that you have done (--stage NN)"
+                )
+            } else {
+                String::new()
+            };
+            Err(format!(
+                "stage {stage} draws this scene with lecture {lecture}'s `{}`, which is not started yet \
+                 (todo!() at {place}): do it first{earlier}",
+                &function[1..]
+            ))
+        }
+        None => Err(format!("the render panicked at {place}: {message}")),
+    }
+}
+
+/// Writes the image (a viewable PNG of an AOV, or its EXR) and prints the statistics asked for.
+fn write(args: &RenderArgs, image: &raylab::Image, stats: &raylab::stats::RayStats) -> Result<(), String> {
     let write = match args.aov {
         Some(aov @ (Aov::Depth | Aov::Normal)) if is_png(&args.output) => {
-            viewable(&image, aov).save_png(&args.output)
+            viewable(image, aov).save_png(&args.output)
         }
         Some(Aov::Depth | Aov::Normal) => image.save_exr(&args.output),
         _ => image.save_png(&args.output),
