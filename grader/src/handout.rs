@@ -435,28 +435,6 @@ mod hint_tests {
         exercises
     }
 
-    /// The student README's example of a grade's last lines counts what the grader counts: every
-    /// exercise (each is a stub in the handout and has checks under its name, tested in
-    /// tests/tests/grader.rs), in all and per lecture.
-    #[test]
-    fn the_student_readmes_counts_are_the_exercises() {
-        let root = own_root();
-        let ws = Workspace::open(&root).unwrap();
-        let counts: Vec<usize> = ws.lectures.iter().map(|l| lecture_exercises(&root, l).len()).collect();
-        let readme = std::fs::read_to_string(root.join("grader/STUDENT-README.md")).unwrap();
-        let line =
-            readme.lines().find(|l| l.starts_with("exercises passed: 0 of ")).expect("the example line");
-        let total: usize =
-            line["exercises passed: 0 of ".len()..].split_whitespace().next().unwrap().parse().unwrap();
-        assert_eq!(total, counts.iter().sum::<usize>(), "{line}");
-        for (lecture, count) in ws.lectures.iter().zip(&counts) {
-            let said = format!("{} 0/{count}", lecture.number);
-            if line.contains(&format!("{} 0/", lecture.number)) {
-                assert!(line.contains(&said), "{line}: lecture {} has {count} exercises", lecture.number);
-            }
-        }
-    }
-
     /// `grader hint` reads `lectures/NN-*/hints.toml`: every exercise has
     /// hints, and every hint names an exercise of its lecture.
     #[test]

@@ -743,7 +743,14 @@ fn the_gradescope_bundle_has_its_scripts_and_the_pristine_workspace() {
     }
     let run = std::fs::read_to_string(dir.join("run_autograder")).unwrap();
     assert!(run.contains("grade --submission /autograder/submission") && run.contains("results.json"));
-    assert!(run.contains("--run-as raylab-student"), "the student's code runs as the grading user");
+    assert!(run.contains("--run-as \"$RAYLAB_USERS\""), "the student's code runs as the grading users");
+    let setup = std::fs::read_to_string(dir.join("setup.sh")).unwrap();
+    assert!(
+        setup.contains("USER_NAME=raylab-student")
+            && setup.contains("useradd")
+            && setup.contains("RAYLAB_USERS="),
+        "setup.sh makes the grading users, one per core, and names them for run_autograder"
+    );
     // The pristine workspace at the top (Gradescope unzips the bundle into /autograder/source),
     // hidden checks included, no build products.
     assert!(dir.join("Cargo.toml").is_file());
@@ -1082,9 +1089,12 @@ fn documents_problems(handout: &Path) -> Vec<String> {
                 }
                 for flag in rest.split_whitespace().filter(|w| w.starts_with("--") && w.len() > 2) {
                     let name = flag.trim_start_matches('-').split('=').next().unwrap_or_default();
-                    if !grader_sources.contains(&name.replace('-', "_"))
-                        && !sources.contains(&format!("\"{name}\""))
-                    {
+                    // A flag is a field of a clap struct (`allow_large: bool`) or a string of one.
+                    let field = name.replace('-', "_");
+                    let known = grader_sources.contains(&field)
+                        || sources.contains(&format!("{field}:"))
+                        || sources.contains(&format!("\"{name}\""));
+                    if !known {
                         problems.push(format!("{shown}: `{flag}` is no flag of the handout's grader"));
                     }
                 }

@@ -315,14 +315,23 @@ fn geometry_difference(
         )));
     }
     // The normals.
-    let normal_off = differing(&normal_ref, &normal, |e, y| {
+    let normal_differs = |e: &Color, y: &Color| {
         let d = (*e - *y).abs().max_element();
         d.is_nan() || d > NORMAL_TOLERANCE
-    });
+    };
+    let normal_off = differing(&normal_ref, &normal, normal_differs);
     if normal_off.0 as f64 > allowed * normal.pixels.len() as f64 {
         let (x, y) = normal_off.1;
         let (e, g) = (normal_ref.get(x, y), normal.get(x, y));
-        let cause = if (e + g).length() < 1e-2 {
+        // Negated where most normals differ, not only at the first: a normal transformed by M
+        // instead of (M⁻¹)ᵀ can come out flipped at one pixel and askew at the rest.
+        let flipped = normal_ref
+            .pixels
+            .iter()
+            .zip(&normal.pixels)
+            .filter(|(e, g)| normal_differs(e, g) && (**e + **g).length() < 1e-2)
+            .count();
+        let cause = if 2 * flipped > normal_off.0 {
             "your normal is the reference's negated: it must face the ray (Hit::new flips it for hits from inside)"
         } else {
             "unit normals, facing the ray: (p − c)/r for spheres, the face normal for flat shapes, and \
