@@ -4,49 +4,32 @@
 
 use std::process::Command;
 
-#[test]
-fn the_tree_of_a_glass_sphere_pixel_reads_as_the_ray_tree_of_the_slides() {
+/// What `render glass-spheres.toml --stage STAGE --tree 100,75` prints.
+fn glass_sphere_tree(stage: &str) -> String {
     let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
     let scene = root.join("lectures/07-reflection-refraction/scenes/glass-spheres.toml");
-    let out_png = std::env::temp_dir().join(format!("raylab-tree-{}.png", std::process::id()));
+    let out_png = std::env::temp_dir().join(format!("raylab-tree-{}-{stage}.png", std::process::id()));
     let out = Command::new(env!("CARGO_BIN_EXE_raylab-checks"))
-        .args([
-            "render",
-            scene.to_str().unwrap(),
-            "--stage",
-            "10",
-            "--tree",
-            "100,75",
-            "-o",
-            out_png.to_str().unwrap(),
-        ])
+        .args(["render", scene.to_str().unwrap(), "--stage", stage, "--tree", "100,75", "-o"])
+        .arg(&out_png)
         .output()
         .expect("the grader runs");
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    String::from_utf8_lossy(&out.stdout).into_owned()
+}
+
+#[test]
+fn the_tree_of_a_glass_sphere_pixel_reads_as_the_ray_tree_of_the_slides() {
     // Read as the slides draw it: the eye ray hits the middle sphere (#2); its k_r = 0.1
     // and k_t = 0.9 split the weight; inside, the transmitted ray meets the back wall
     // of the same sphere (t = 1.482 both ways, a chord), the shadow ray from there is
     // blocked by the sphere itself (opaque shadows), and the light rays that leave
     // end on the floor or in the background. Branches under 0.01 are not spawned.
-    let stdout = String::from_utf8_lossy(&out.stdout);
+    let stdout = glass_sphere_tree("10");
     insta::assert_snapshot!("glass_sphere_pixel_100_75", stdout);
     // Lecture 08's stage traces the same tree (no texture, no supersampling, brute force's hits
     // are the hierarchy's): the command chapter 8 gives a student who has done lecture 08.
-    let staged = Command::new(env!("CARGO_BIN_EXE_raylab-checks"))
-        .args([
-            "render",
-            scene.to_str().unwrap(),
-            "--stage",
-            "08",
-            "--tree",
-            "100,75",
-            "-o",
-            out_png.to_str().unwrap(),
-        ])
-        .output()
-        .expect("the grader runs");
-    assert!(staged.status.success(), "{}", String::from_utf8_lossy(&staged.stderr));
-    assert_eq!(String::from_utf8_lossy(&staged.stdout), stdout);
+    assert_eq!(glass_sphere_tree("08"), stdout);
 }
 
 /// `--view PAGE` writes the same tree in 3D: the page's data holds the text the snapshot above
