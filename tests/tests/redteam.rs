@@ -249,11 +249,20 @@ fn snapshots_and_hidden_checks_are_out_of_the_students_reach() {
         let found = bytes.windows(secret.len()).any(|w| w == secret.as_bytes());
         assert!(!found, "the student's build holds {secret:?}");
     }
+    // (c) The image functions' own checks fail too: a copied snapshot is no object-id image of
+    // the scene their check answers.
+    for id in ["02/object_id_image/unit", "02/depth_image/unit", "02/normal_image/unit"] {
+        let check = status_of(&grade, id);
+        assert_eq!(check["status"], "failed", "{id}: {}\n{stderr}", check["summary"]);
+        assert_eq!(check["points"], 0, "{id}");
+    }
     // Everything else of the two lectures is graded as the reference is.
     for check in checks(&grade) {
         let id = check["info"]["id"].as_str().unwrap_or_default();
-        let attacked =
-            id.contains("/geometry/") || id.starts_with("05/lambert/") || id.starts_with("02/image/");
+        let attacked = id.contains("/geometry/")
+            || id.starts_with("05/lambert/")
+            || id.starts_with("02/image/")
+            || id.contains("_image/");
         if !attacked && check["info"]["lecture"] == "02" && check["info"]["kind"] != "image" {
             assert_eq!(check["status"], "passed", "{id}: {}\n{stderr}", check["summary"]);
         }
