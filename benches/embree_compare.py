@@ -10,7 +10,7 @@ Usage (the arguments of `grader bench-rays`):
 On first use it creates a virtualenv in <workspace>/target/embree-venv, installs
 `embreex numpy` there and re-runs itself inside it.
 
-The rays follow DESIGN.md's conventions, computed here independently of the Rust
+The rays follow the book's conventions (§0), computed here independently of the Rust
 code: pixel centres, sx = 2(x+0.5)/w - 1, sy = 1 - 2(y+0.5)/h; look-at frame
 w = normalize(eye - at), u = normalize(up x w), v = w x u; direction
 normalize(u*sx*aspect*tan(fovy/2) + v*sy*tan(fovy/2) - w), in float64, then

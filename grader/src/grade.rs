@@ -67,8 +67,9 @@ pub struct GradeOptions {
     pub show_progress: bool,
     /// An already built checks binary to use instead of building (tests).
     pub binary: Option<PathBuf>,
-    /// A judge (the checks built with every exercise stubbed, `submission::judge`): the
-    /// checks declared `judged` run in two processes, the verdict the judge's (`run_judged`).
+    /// A judge (the checks built with every exercise stubbed, `submission::judge`): every check
+    /// runs in two processes, the verdict the judge's (`run_judged`), and the list of checks is
+    /// the judge's.
     pub judge: Option<PathBuf>,
     /// The users the student's code is built and run as (`grade --run-as`): the first builds, and
     /// each runs one job's checks (at most as many jobs as users); the judge runs as this
@@ -303,7 +304,7 @@ fn list(binary: &Path) -> Result<Vec<Info>, String> {
 fn from_judge(judge: &Path, built: &Built) -> Result<Vec<Info>, String> {
     Ok(list(judge)?
         .into_iter()
-        .map(|i| Info { available: built.lectures.contains(&i.lecture), judged: true, ..i })
+        .map(|i| Info { available: built.lectures.contains(&i.lecture), ..i })
         .collect())
 }
 

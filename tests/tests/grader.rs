@@ -611,13 +611,7 @@ struct Accepted {
 }
 
 fn accepted() -> Vec<Accepted> {
-    catalogue_files()
-        .iter()
-        .flat_map(|f| {
-            let text = std::fs::read_to_string(f).unwrap();
-            toml::from_str::<Catalogue>(&text).unwrap_or_else(|e| panic!("{}: {e}", f.display())).accepted
-        })
-        .collect()
+    catalogues().into_iter().flat_map(|c| c.accepted).collect()
 }
 
 /// Each accepted answer applied alone: every check of its lecture passes, graded as a
@@ -660,22 +654,23 @@ fn every_accepted_answer_passes_the_lectures_checks_and_its_tests() {
     assert!(refused.is_empty(), "right answers refused:\n{}", refused.join("\n"));
 }
 
-fn catalogue_files() -> Vec<PathBuf> {
+/// Every `tests/mistakes/*.toml`, in the order of their names.
+fn catalogues() -> Vec<Catalogue> {
     let dir = root().join("tests/mistakes");
     let mut files: Vec<PathBuf> = std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().path()).collect();
     files.sort();
     files.retain(|f| f.extension().is_some_and(|e| e == "toml"));
     files
+        .iter()
+        .map(|f| {
+            let text = std::fs::read_to_string(f).unwrap();
+            toml::from_str::<Catalogue>(&text).unwrap_or_else(|e| panic!("{}: {e}", f.display()))
+        })
+        .collect()
 }
 
 fn catalogue() -> Vec<Mistake> {
-    catalogue_files()
-        .iter()
-        .flat_map(|f| {
-            let text = std::fs::read_to_string(f).unwrap();
-            toml::from_str::<Catalogue>(&text).unwrap_or_else(|e| panic!("{}: {e}", f.display())).mistake
-        })
-        .collect()
+    catalogues().into_iter().flat_map(|c| c.mistake).collect()
 }
 
 #[test]

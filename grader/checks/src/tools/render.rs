@@ -276,27 +276,34 @@ fn stop_on_ctrl_c(output: &std::path::Path) {
     });
 }
 
+/// `grader render`: a `todo!()` met on the way is a message naming the exercise (the panic hook
+/// that finds where it stopped is the process's: set here, in the tool's own process, not in
+/// [`render_to_file`], which tests call side by side).
 pub fn render(args: &RenderArgs) -> Result<(), String> {
     stop_on_ctrl_c(&args.output);
-    render_to_file(args)
+    until_todo(&args.stage(), || render_to_file(args))
 }
 
-/// Loads, checks against the budget, renders and writes: `grader render` but Ctrl-C.
+impl RenderArgs {
+    /// The stage asked for, else the scene's own ([`own_stage`]).
+    fn stage(&self) -> String {
+        self.stage.clone().unwrap_or_else(|| own_stage(&self.scene))
+    }
+}
+
+/// Loads, checks against the budget, renders and writes: `grader render` but Ctrl-C and the
+/// message for a `todo!()`.
 pub(crate) fn render_to_file(args: &RenderArgs) -> Result<(), String> {
     let mut scene = raylab::scene::load(&args.scene).map_err(|e| e.to_string())?;
     if let Some((w, h)) = args.size {
         scene.width = w;
         scene.height = h;
     }
-    let stage = args.stage.clone().unwrap_or_else(|| own_stage(&args.scene));
+    let stage = args.stage();
     if let Some((x, y)) = args.tree.filter(|(x, y)| *x >= scene.width || *y >= scene.height) {
         return Err(format!("pixel ({x}, {y}) is outside the {}×{} image", scene.width, scene.height));
     }
-    if stage == FINAL_STAGE {
-        until_todo(&stage, || traced(args, &scene))
-    } else {
-        until_todo(&stage, || staged(args, &scene, &stage))
-    }
+    if stage == FINAL_STAGE { traced(args, &scene) } else { staged(args, &scene, &stage) }
 }
 
 /// The complete tracer's render (stage 10), with every flag.
