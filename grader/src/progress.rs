@@ -99,9 +99,18 @@ pub fn progress(ws: &Workspace, grade: &Grade) -> Progress {
 
 /// The lines that end every grade: progress per lecture, then the next exercise.
 pub fn text(progress: &Progress) -> String {
-    let mut text = format!("\nexercises passed: {} of {}  (", progress.passed, progress.total);
-    let per: Vec<String> = progress.lectures.iter().map(|(l, p, t)| format!("{l} {p}/{t}")).collect();
-    let _ = writeln!(text, "{})", per.join(", "));
+    let mut text = String::from("\n");
+    // A selection of image checks alone (`grader 05/image`) grades no exercise: no count to show.
+    if progress.total > 0 {
+        let per: Vec<String> = progress.lectures.iter().map(|(l, p, t)| format!("{l} {p}/{t}")).collect();
+        let _ = writeln!(
+            text,
+            "exercises passed: {} of {}  ({})",
+            progress.passed,
+            progress.total,
+            per.join(", ")
+        );
+    }
     match &progress.next {
         None => text.push_str("every check graded passes\n"),
         Some(next) => {
@@ -230,5 +239,8 @@ mod tests {
         let shown = text(&progress(&ws, &grade));
         assert!(shown.contains("exercises passed: 2 of 4  (01 2/2, 02 0/2)"), "{shown}");
         assert!(shown.contains("hint 02/hit_sphere_stable"), "{shown}");
+        // A selection without an exercise's check shows no count of none.
+        let none = Progress { lectures: vec![], passed: 0, total: 0, next: None };
+        assert_eq!(text(&none), "\nevery check graded passes\n");
     }
 }

@@ -25,6 +25,7 @@ use raylab_protocol::{VIEW_DATA, VIEW_MISSING};
 
 use crate::check::{CheckResult, Failure, Images, Info, Kind, Meta, fail};
 use crate::judge;
+use crate::path;
 use crate::stages::{self, FINAL_STAGE};
 
 /// A pixel differs when one of its 8-bit sRGB channels moves by more than
@@ -204,8 +205,41 @@ fn trees_snapshot(file: &SceneFile, stage: &str) -> PathBuf {
     file.snapshot(if stage == file.lecture { ".trees.json" } else { ".final.trees.json" })
 }
 
+/// The blessed calls on the picture's path at the grid's pixels beside [`stage_snapshot`]:
+/// `S.calls.json`, `S.final.calls.json` (see [`crate::path`]), for the stages that have them.
+pub(crate) fn calls_snapshot(file: &SceneFile, stage: &str) -> PathBuf {
+    file.snapshot(if stage == file.lecture { ".calls.json" } else { ".final.calls.json" })
+}
+
+/// Where the student's calls at grid pixel `at` first differ from the blessed ones: the cause
+/// of a failed picture whose geometry matches; where every call agrees, the pixel loop's
+/// ([`path::pixel_loop`]). `None` where the stage has no calls or the pixel is not the grid's.
+fn path_difference(
+    file: &SceneFile,
+    stage: &str,
+    scene: &Scene,
+    at: (u32, u32),
+    yours: &[path::Call],
+) -> Option<String> {
+    let text = std::fs::read_to_string(calls_snapshot(file, stage)).ok()?;
+    let blessed: path::GridCalls = serde_json::from_str(&text).ok()?;
+    let index = crate::view3d::grid(blessed.width, blessed.height).iter().position(|p| *p == at)?;
+    let (x, y) = at;
+    match path::first_difference(&blessed.pixel(index)?, yours) {
+        Some((exercise, how)) => Some(format!(
+            "at pixel ({x}, {y}), the first value on this picture's path that differs: {how}. Check {exercise}"
+        )),
+        None => path::pixel_loop(stage, scene).map(|exercise| {
+            format!(
+                "at pixel ({x}, {y}) every exercise on this picture's path returns the reference's values, \
+                 yet the pixel differs: check {exercise}, which makes the pixel from them"
+            )
+        }),
+    }
+}
+
 /// The stages `file` is drawn by: its lecture's, and the complete tracer's for lectures 01–09.
-fn stages_of(file: &SceneFile) -> Vec<&str> {
+pub(crate) fn stages_of(file: &SceneFile) -> Vec<&str> {
     if file.lecture == FINAL_STAGE { vec![FINAL_STAGE] } else { vec![file.lecture.as_str(), FINAL_STAGE] }
 }
 
@@ -460,6 +494,12 @@ fn check_image(file: &SceneFile, stage: &str, dir: &Path) -> CheckResult {
     let grid = judge::student(|| {
         stages::grid_trees(stage, &scene).and_then(|trees| serde_json::to_string(&trees).ok())
     });
+    // The grid pixel the report's view opens at (a differing one, nearest the first): where the
+    // student's calls on the picture's path are compared with the reference's.
+    let at = judge::decide(|| match &compared {
+        Some(Ok(c)) => view_pixel(&c.expected, &yours, (x, y)),
+        _ => (x, y),
+    });
     let cause = if stage == "01" {
         judge::judge_only(|| camera_diagnosis(&yours))
     } else {
@@ -468,6 +508,7 @@ fn check_image(file: &SceneFile, stage: &str, dir: &Path) -> CheckResult {
         let matches = judge::decide(|| matches!(geometry, Some(Ok(None))));
         // The student's eye rays, to find where the differing pixels' surfaces face the lights.
         let rays = if matches { judge::student(|| camera_rays(&scene)) } else { None };
+        let calls = if matches { judge::student(|| path::calls(stage, &scene, at)) } else { None };
         judge::judge_only(|| match geometry {
             Some(Ok(Some(geometry))) => format!(
                 "the geometry differs already ({}: expected {}, got {}; {}): fix {} first",
@@ -483,10 +524,24 @@ fn check_image(file: &SceneFile, stage: &str, dir: &Path) -> CheckResult {
             ),
             Some(Ok(None)) => {
                 let expected = compared.as_ref().and_then(|c| c.as_ref().ok()).map(|c| &c.expected);
-                let diagnosis = expected.map_or_else(String::new, |expected| {
+                let seen = expected.map(|expected| {
                     shading_diagnosis(stage, file, &scene, expected, &yours, rays.as_deref())
                 });
-                format!("your geometry matches; {diagnosis}")
+                // The exercise whose value differs first on the path, with a symptom the whole
+                // picture shows (a guess from the picture would only blur the name); without
+                // one, what the picture shows.
+                let named =
+                    calls.as_deref().and_then(|calls| path_difference(file, stage, &scene, at, calls));
+                match (named, seen) {
+                    (Some(named), Some(Seen::Symptom(symptom))) => {
+                        format!("your geometry matches; {named}. Over the picture: {symptom}")
+                    }
+                    (Some(named), _) => format!("your geometry matches; {named}"),
+                    (None, Some(Seen::Symptom(seen) | Seen::Guess(seen))) => {
+                        format!("your geometry matches; {seen}")
+                    }
+                    (None, None) => "your geometry matches".into(),
+                }
             }
             Some(Err(e)) => e,
             None => String::new(),
@@ -502,7 +557,6 @@ fn check_image(file: &SceneFile, stage: &str, dir: &Path) -> CheckResult {
     }
     if let Some(trees) = grid {
         // The report is an aid: without its 3D view the verdict stands, the reason is in the page.
-        let at = view_pixel(&compared.expected, &yours, (x, y));
         if let Err(e) = write_view(file, stage, &scene, &trees, at, dir) {
             let _ = std::fs::write(dir.join(VIEW_MISSING), e);
         }
@@ -575,6 +629,16 @@ fn camera_diagnosis(yours: &Image) -> String {
         .into()
 }
 
+/// What the differing pixels of a shaded image show, from where they lie (the reference's
+/// geometry from the snapshots), at stage `stage`.
+enum Seen {
+    /// A symptom seen in the pixels, and its fix: NaN, negative colours, light from behind a
+    /// surface, shadow acne.
+    Symptom(String),
+    /// A guess from the differences' share on glossy, darker or brighter pixels.
+    Guess(String),
+}
+
 /// Where the differing pixels of a shaded image lie, and what that points to
 /// at stage `stage` (the reference's geometry from the snapshots).
 fn shading_diagnosis(
@@ -584,17 +648,17 @@ fn shading_diagnosis(
     expected: &Image,
     yours: &Image,
     rays: Option<&[raylab::Ray]>,
-) -> String {
+) -> Seen {
     let (Ok(id), Ok(depth), Ok(normal)) = (
         Image::load_png(file.snapshot(".id.png")),
         Image::load_exr(file.snapshot(".depth.exr")),
         Image::load_exr(file.snapshot(".normal.exr")),
     ) else {
-        return "the shading differs".into();
+        return Seen::Guess("the shading differs".into());
     };
     let (w, h) = (expected.width, expected.height);
     if (id.width, id.height) != (w, h) {
-        return "the shading differs".into();
+        return Seen::Guess("the shading differs".into());
     }
     let mut over = vec![false; (w * h) as usize];
     for (i, (e, g)) in expected.pixels.iter().zip(&yours.pixels).enumerate() {
@@ -640,24 +704,24 @@ fn shading_diagnosis(
     let share = |n: usize| n as f64 / total.max(1) as f64;
     let headlight = matches!(stage, "02" | "03" | "04" | "09");
     if nan > 0 {
-        format!(
+        Seen::Symptom(format!(
             "{nan} of your pixels are NaN or infinite: a division by zero or the sqrt of a negative number"
-        )
+        ))
     } else if negative > 0 {
-        format!(
+        Seen::Symptom(format!(
             "{negative} of your pixels have a negative colour: light from behind a surface subtracts light. \
              Clamp with max(N·L, 0) in the diffuse term (and the specular terms' cosines)"
-        )
+        ))
     } else if headlight {
-        "the headlight shading k_d·(½ + ½ N·V) differs where your ids and depths match: the normals differ \
+        Seen::Guess("the headlight shading k_d·(½ + ½ N·V) differs where your ids and depths match: the normals differ \
          (unit, facing the ray), or the hit's material index"
-            .into()
+            .into())
     } else if share(facing_away) >= 0.5 {
-        "the shading differs where the surface faces away from every light (N·L ≤ 0): clamp with max(N·L, 0) \
+        Seen::Symptom("the shading differs where the surface faces away from every light (N·L ≤ 0): clamp with max(N·L, 0) \
          in the diffuse and the specular terms"
-            .into()
+            .into())
     } else if share(glossy) >= 0.5 && stage >= "07" {
-        if stage == "07" {
+        Seen::Guess(if stage == "07" {
             "the differences are on reflective or transparent objects, which show the sky in your mirror and \
              refracted directions: check 07 mirror_direction, interface and refract"
                 .into()
@@ -665,17 +729,17 @@ fn shading_diagnosis(
             "the differences are on reflective or transparent objects: check the mirror and refracted rays \
              (07 mirror_direction, refract, fresnel_dielectric; 08 trace and its weights)"
                 .into()
-        }
+        })
     } else if share(isolated) >= 0.3 && share(darker) >= 0.7 && stage >= "06" {
-        "speckled dark pixels on lit surfaces: shadow acne. Offset the shadow ray's origin off the surface \
+        Seen::Symptom("speckled dark pixels on lit surfaces: shadow acne. Offset the shadow ray's origin off the surface \
          (06 offset_origin) and ignore blockers beyond the light"
-            .into()
+            .into())
     } else if share(darker) >= 0.8 {
-        "your image is darker where it differs: a light missing (or wrongly in shadow), its attenuation or \
+        Seen::Guess("your image is darker where it differs: a light missing (or wrongly in shadow), its attenuation or \
          intensity, or a colour multiplied twice"
-            .into()
+            .into())
     } else if share(darker) <= 0.2 {
-        if stage == "05" {
+        Seen::Guess(if stage == "05" {
             "your image is brighter where it differs: light from behind the surface (max(N·L, 0)), a \
              missing falloff, or a colour added twice"
                 .into()
@@ -683,11 +747,11 @@ fn shading_diagnosis(
             "your image is brighter where it differs: a missing shadow, light from behind the surface \
              (max(N·L, 0)), or the sRGB encoding applied twice"
                 .into()
-        }
+        })
     } else {
-        "the shading differs: compare expected.png and yours.png, and print the ray tree of a differing pixel \
+        Seen::Guess("the shading differs: compare expected.png and yours.png, and print the ray tree of a differing pixel \
          (grader render SCENE --tree X,Y)"
-            .into()
+            .into())
     }
 }
 
@@ -801,6 +865,20 @@ fn bless_trees(file: &SceneFile, stage: &str, scene: &Scene) -> Result<(), Strin
     std::fs::write(&path, json + "\n").map_err(|e| format!("{}: {e}", path.display()))
 }
 
+/// Writes the reference's calls on the picture's path at the report's grid of pixels for `file`
+/// at `stage`, where the stage has calls ([`path::calls`]).
+#[cfg(feature = "complete")]
+fn bless_calls(file: &SceneFile, stage: &str, scene: &Scene) -> Result<(), String> {
+    let pixels = crate::view3d::grid(scene.width, scene.height);
+    let Some(calls) = pixels.iter().map(|&p| path::calls(stage, scene, p)).collect::<Option<Vec<_>>>() else {
+        return Ok(());
+    };
+    let grid = path::GridCalls::new(scene.width, scene.height, calls);
+    let path = calls_snapshot(file, stage);
+    let json = serde_json::to_string(&grid).map_err(|e| e.to_string())?;
+    std::fs::write(&path, json + "\n").map_err(|e| format!("{}: {e}", path.display()))
+}
+
 /// `grader bless`: writes every scene's snapshots (or one lecture's) from
 /// the current code: `S.png` by the scene's stage, `S.final.png` by the
 /// complete tracer (scenes of lectures 01–09), and the geometry images.
@@ -820,6 +898,7 @@ pub fn bless(only: Option<&str>) -> Result<(), String> {
         }
         for stage in stages_of(&file) {
             bless_trees(&file, stage, &scene)?;
+            bless_calls(&file, stage, &scene)?;
         }
         render(Some(Aov::Id))?.save_png(file.snapshot(".id.png")).map_err(error)?;
         render(Some(Aov::Depth))?.save_exr(file.snapshot(".depth.exr")).map_err(error)?;

@@ -21,6 +21,7 @@ mod check;
 mod images;
 mod judge;
 mod lectures;
+mod path;
 mod platform;
 mod remote;
 #[cfg(feature = "l03")]

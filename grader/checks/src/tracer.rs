@@ -39,7 +39,7 @@ pub fn scene_sampling(scene: &Scene) -> Sampling {
 }
 
 /// The seed of every supersampled render: the same image on every run.
-const SAMPLING_SEED: u64 = 0x5eed;
+pub const SAMPLING_SEED: u64 = 0x5eed;
 
 /// Renders `scene` at its size: the traced image, or the AOV asked for.
 pub fn render_scene(
