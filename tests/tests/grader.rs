@@ -952,8 +952,9 @@ Twice a vector is the vector scaled by two.
 /// the lectures' READMEs, read as the handout has them. A test name cited (a backquoted name of
 /// four words or more, `exactly_tangent_ray_hits_once_or_misses_never_nan`) is in its sources; a
 /// file path (`src/offset.rs`, `crates/raylab/SCENES.md`) is a file of the handout, of a lecture
-/// or of the book; a `grader` command's subcommand and flags are the handout's grader's. And no
-/// instructor command is among them.
+/// or of the book; a `grader` command's subcommand and flags are the handout's grader's. No
+/// instructor command is among them, and no count of the course's parts stands in their prose
+/// outside a generated region ([`counts`]).
 #[test]
 fn what_the_students_documents_name_exists_in_the_handout() {
     let dir = scratch().join("docs-handout");
@@ -973,13 +974,16 @@ fn what_the_students_documents_name_exists_in_the_handout() {
     std::fs::write(
         &planted,
         format!(
-            "{text}\nSee `grazing_ray_hits_once_or_twice` and `src/testing.rs`.\n\n```sh\ncargo run -p grader -- \
-             render X --no-such-flag\ncargo run -p grader -- bless\n```\n"
+            "{text}\nSee `grazing_ray_hits_once_or_twice` and `src/testing.rs`; the lecture's eight \
+             exercises.\n\n```sh\ncargo run -p grader -- render X --no-such-flag\ncargo run -p grader -- \
+             bless\n```\n"
         ),
     )
     .unwrap();
     let found = documents_problems(&dir).join("\n");
-    for drift in ["grazing_ray_hits_once_or_twice", "src/testing.rs", "--no-such-flag", "bless"] {
+    for drift in
+        ["grazing_ray_hits_once_or_twice", "src/testing.rs", "--no-such-flag", "bless", "eight exercises"]
+    {
         assert!(found.contains(drift), "the planted {drift} is not found:\n{found}");
     }
 }
@@ -1101,7 +1105,90 @@ fn documents_problems(handout: &Path) -> Vec<String> {
             }
         }
     }
+    for (path, text) in &documents {
+        let shown = path.strip_prefix(handout).unwrap_or(path).display().to_string();
+        problems.extend(counts(text).into_iter().map(|count| {
+            format!("{shown}: \"{count}\" is a count that drifts when the course changes: generate it or leave it out")
+        }));
+    }
     problems.sort();
     problems.dedup();
     problems
+}
+
+/// The counts of the course's parts in a document's prose — "three scenes", "8 exercises",
+/// "0 of 86" — outside code blocks and `BEGIN GENERATED` regions (which `grader dev sync`
+/// keeps true). A lecture that gains a scene or an exercise would leave such a count wrong.
+fn counts(text: &str) -> Vec<String> {
+    const NUMBERS: &[&str] =
+        &["one", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten", "eleven", "twelve"];
+    const PARTS: &[&str] =
+        &["exercises", "checks", "scenes", "stubs", "lectures", "chapters", "pictures", "functions", "hints"];
+    // A lecture's number ("02") is a name, not a count.
+    let is_number = |w: &str| {
+        (!w.is_empty() && !w.starts_with('0') && w.chars().all(|c| c.is_ascii_digit()))
+            || w == "0"
+            || NUMBERS.contains(&w.to_lowercase().as_str())
+    };
+    let mut found = Vec::new();
+    let (mut generated, mut block) = (false, false);
+    for line in text.lines() {
+        if line.contains("BEGIN GENERATED") {
+            generated = true;
+        } else if line.contains("END GENERATED") {
+            generated = false;
+            continue;
+        }
+        if line.trim_start().starts_with("```") {
+            block = !block;
+            continue;
+        }
+        if generated || block {
+            continue;
+        }
+        // Words as they stand in the line ("02's" and "01-transforms" are one word each); a
+        // number after a '.' is a version or a course code (MIT 6.837), not a count.
+        let words: Vec<&str> = line
+            .split(|c: char| !(c.is_alphanumeric() || ".'’-".contains(c)))
+            .filter(|w| !w.is_empty())
+            .map(|w| w.trim_end_matches('.'))
+            .collect();
+        for (i, word) in words.iter().enumerate() {
+            // "stage 10", "lecture 9", "chapter 4": a name.
+            let named = i > 0
+                && ["stage", "lecture", "lectures", "chapter", "week"]
+                    .contains(&words[i - 1].to_lowercase().as_str());
+            if !is_number(word) || named {
+                continue;
+            }
+            let next = |k: usize| words.get(i + k).copied().unwrap_or_default();
+            // "three scenes", "four small scenes".
+            if PARTS.contains(&next(1)) || PARTS.contains(&next(2)) {
+                let upto = if PARTS.contains(&next(1)) { 1 } else { 2 };
+                found.push(words[i..=i + upto].join(" "));
+            }
+            // "exercises passed: 0 of 86" (a count of parts, not "one of 12 gradients").
+            let of_parts = words[i.saturating_sub(2)..i].iter().any(|w| PARTS.contains(w));
+            if of_parts
+                && next(1) == "of"
+                && next(2).chars().all(|c| c.is_ascii_digit())
+                && !next(2).is_empty()
+            {
+                found.push(words[i..=i + 2].join(" "));
+            }
+        }
+    }
+    found
+}
+
+#[test]
+fn counts_of_the_course_s_parts_are_found_in_prose_only() {
+    let text = "Lecture 02 has eight exercises and four small scenes; exercises passed: 0 of 86.\n\
+                MIT 6.837 scenes, two images, 50 points, 02's scenes, 01-transforms scenes.\n\
+                Stage 10 with lectures 01–10; one of 12 gradients.\n\
+                ```\nexercises passed: 3 of 90\n```\n\
+                <!-- BEGIN GENERATED table: x -->\n| 11 exercises |\n<!-- END GENERATED table -->\n";
+    assert_eq!(counts(text), ["eight exercises", "four small scenes", "0 of 86"]);
+    // The student README's example, as it stands: the total left out.
+    assert!(counts("exercises passed: 0 of …").is_empty());
 }
