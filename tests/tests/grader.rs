@@ -129,6 +129,10 @@ fn the_handout_compiles_and_scores_zero_without_a_crash() {
         "{next}"
     );
     assert_eq!(grade["progress"]["passed"], 0);
+    // One count of exercises: the stubs the handout wrote are the exercises progress counts.
+    let said = String::from_utf8_lossy(&out.stdout);
+    let stubbed = said.split_whitespace().nth(1).and_then(|n| n.parse::<u64>().ok());
+    assert_eq!(stubbed, grade["progress"]["total"].as_u64(), "{said}");
     // Every lecture has exercises marked not started, so the table tells a student where to begin.
     let mut lectures: Vec<String> = std::fs::read_dir(dir.join("lectures"))
         .unwrap()
