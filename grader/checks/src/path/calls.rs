@@ -62,20 +62,15 @@ pub fn calls(stage: &str, scene: &Scene, (x, y): (u32, u32)) -> Option<Vec<Call>
     let material: Cow<Material> = Cow::Borrowed(material);
     let v = -ray.dir.normalize();
     for i in 0..scene.lights.len() {
-        one_light(&mut trail, stage, scene, objects.as_ref(), &ray, &hit, &material, i);
+        let at_hit = AtHit { scene, objects: objects.as_ref(), ray: &ray, hit: &hit, material: &material };
+        one_light(&mut trail, stage, &at_hit, i);
     }
     let local = || shade_local(&material, material.diffuse, &hit, v, &scene.lights, scene.ambient);
     match stage {
         "05" | "07" => trail.push("05/shade_local", "the sum: ambient plus every light", &local()),
         #[cfg(feature = "l06")]
         _ => {
-            let surface = l06_shadows::Surface {
-                material: &material,
-                diffuse: material.diffuse,
-                hit,
-                v,
-                origin: ray.origin,
-            };
+            let surface = surface(&material, &hit, &ray);
             let color = l06_shadows::shade_with_shadows(
                 objects.as_ref(),
                 &scene.materials,
@@ -100,6 +95,17 @@ pub fn calls(stage: &str, scene: &Scene, (x, y): (u32, u32)) -> Option<Vec<Call>
     Some(trail.0)
 }
 
+/// The eye ray's hit, where a light's calls are made: the scene, the intersector its shadow rays
+/// ask, the ray, its hit and the (textured) material there.
+#[derive(Clone, Copy)]
+struct AtHit<'a> {
+    scene: &'a Scene,
+    objects: &'a dyn raylab::Intersector,
+    ray: &'a Ray,
+    hit: &'a Hit,
+    material: &'a Material,
+}
+
 /// The intersection exercise of object `index`: its transform's, or its shape's.
 fn hit_exercise(scene: &Scene, index: usize) -> &'static str {
     let Some(object) = scene.objects.get(index) else { return "02/closest_hit" };
@@ -120,23 +126,15 @@ fn hit_exercise(scene: &Scene, index: usize) -> &'static str {
 
 /// Light `index`'s calls at the hit: its falloffs, the light seen from the point, the
 /// cosines, its shading, and from stage 06 on its shadow ray (or an area light's samples).
-#[allow(clippy::too_many_arguments, unused_variables)]
-fn one_light(
-    trail: &mut Trail,
-    stage: &str,
-    scene: &Scene,
-    objects: &dyn raylab::Intersector,
-    ray: &Ray,
-    hit: &Hit,
-    material: &Material,
-    index: usize,
-) {
+#[allow(unused_variables)]
+fn one_light(trail: &mut Trail, stage: &str, at_hit: &AtHit, index: usize) {
+    let AtHit { scene, objects, ray, hit, material } = *at_hit;
     let light = &scene.lights[index];
     let at = format!("light {index}");
     let (p, n, v) = (hit.point, hit.normal, -ray.dir.normalize());
     #[cfg(feature = "l06")]
     if stage != "05" && stage != "07" && light.shadows && light.kind.is_area() {
-        area_light(trail, scene, objects, ray, hit, material, index);
+        area_light(trail, at_hit, index);
         return;
     }
     let position = match light.kind {
@@ -178,12 +176,18 @@ fn one_light(
             format!("{at}: the shadow ray's origin − p, in units of ε·(|p|₁ + |o|₁)"),
             &offset,
         );
-        let surface =
-            l06_shadows::Surface { material, diffuse: material.diffuse, hit: *hit, v, origin: ray.origin };
+        let surface = surface(material, hit, ray);
         let mode = stages::shadow_settings(scene).mode;
         let seen = l06_shadows::visibility(objects, &scene.materials, &surface, &sample, mode);
         trail.push("06/visibility", format!("{at}: what its shadow ray lets through"), &seen);
     }
+}
+
+/// Lecture 06's view of the surface at the eye ray's hit, with the material there.
+#[cfg(feature = "l06")]
+fn surface<'a>(material: &'a Material, hit: &Hit, ray: &Ray) -> l06_shadows::Surface<'a> {
+    let v = -ray.dir.normalize();
+    l06_shadows::Surface { material, diffuse: material.diffuse, hit: *hit, v, origin: ray.origin }
 }
 
 /// A light sample's numbers: direction, distance, intensity.
@@ -208,16 +212,9 @@ fn cosines(trail: &mut Trail, at: &str, material: &Material, n: Vec3, v: Vec3, l
 /// An area light with shadows (stages 06, 08, 10): its first samples in order, the first
 /// sample's light and cosines, and its average.
 #[cfg(feature = "l06")]
-fn area_light(
-    trail: &mut Trail,
-    scene: &Scene,
-    objects: &dyn raylab::Intersector,
-    ray: &Ray,
-    hit: &Hit,
-    material: &Material,
-    index: usize,
-) {
-    use l06_shadows::{Surface, point_seed, shade_area_light, stratified};
+fn area_light(trail: &mut Trail, at_hit: &AtHit, index: usize) {
+    let AtHit { scene, objects, ray, hit, material } = *at_hit;
+    use l06_shadows::{point_seed, shade_area_light, stratified};
     let (light, at) = (&scene.lights[index], format!("light {index}"));
     let settings = stages::shadow_settings(scene);
     let samples =
@@ -235,9 +232,7 @@ fn area_light(
         let sample = l05_shading::sample_light(light, hit.point, u);
         trail.push("05/sample_light", format!("{at}: the first sample"), &light_numbers(&sample)[..]);
     }
-    let v = -ray.dir.normalize();
-    let surface = Surface { material, diffuse: material.diffuse, hit: *hit, v, origin: ray.origin };
-    let color = shade_area_light(objects, &scene.materials, &surface, light, settings);
+    let color = shade_area_light(objects, &scene.materials, &surface(material, hit, ray), light, settings);
     trail.push("06/shade_area_light", at, &color);
 }
 
