@@ -29,7 +29,6 @@ pub fn ray(o: [Float; 3], d: [Float; 3]) -> Ray {
 }
 
 /// `x` in f64, whatever `Float` is, without rounding: for ground truth computed wider.
-#[allow(clippy::useless_conversion, reason = "Float is f64 with the kit's f64 feature")]
 pub fn wide(x: Float) -> f64 {
     f64::from(x)
 }

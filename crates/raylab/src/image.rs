@@ -121,7 +121,6 @@ impl Image {
 
     /// Writes a 32-bit float RGB OpenEXR with the linear values unchanged
     /// (for depth and normal images). Refuses NaN and infinite values.
-    #[allow(clippy::unnecessary_cast)] // a cast in f64 builds, none in f32 ones
     pub fn save_exr(&self, path: impl AsRef<Path>) -> Result<(), ImageError> {
         let path = path.as_ref();
         self.check_finite(path)?;
@@ -133,7 +132,6 @@ impl Image {
     }
 
     /// Reads a float OpenEXR written by [`Image::save_exr`].
-    #[allow(clippy::unnecessary_cast)] // a cast in f64 builds, none in f32 ones
     pub fn load_exr(path: impl AsRef<Path>) -> Result<Self, ImageError> {
         let path = path.as_ref();
         let decoded = image::open(path).map_err(|e| io_error(path, e))?.to_rgb32f();

@@ -135,8 +135,6 @@ pub const PERLIN_PERMUTATION: [u8; 256] = [
 ];
 
 #[cfg(test)]
-// Widening `Float` to f64 is the identity in an f64 build.
-#[allow(clippy::useless_conversion)]
 mod tests {
     use super::*;
 

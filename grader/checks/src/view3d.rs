@@ -3,10 +3,6 @@
 //! the browser), and `assets/view3d.js`, a small hand-written WebGL module, draws them with an
 //! orbiting camera. `grader render SCENE --tree X,Y --view FILE` writes one.
 
-// `Float` is f32, or f64 with the kit's `f64` feature: the page's numbers are f32 either way, and
-// the angles are worked in f64.
-#![allow(clippy::unnecessary_cast)]
-
 use std::f64::consts::PI;
 use std::fmt::Write as _;
 

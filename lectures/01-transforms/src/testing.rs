@@ -9,7 +9,6 @@ use raylab::{Float, Mat4, Vec3, Vec4};
 pub const ORTHO_TOL: Float = 8.0 * Float::EPSILON;
 
 /// `x` rounded to `Float`.
-#[allow(clippy::unnecessary_cast)]
 pub fn from_f64(x: f64) -> Float {
     x as Float
 }

@@ -121,7 +121,6 @@ pub fn edge_function(p: Vec3, q: Vec3) -> Float {
     let e = p.x * q.y - p.y * q.x;
     // Zero in f32: recompute in f64 (exact products, one rounding).
     if e == 0.0 && Float::MANTISSA_DIGITS < f64::MANTISSA_DIGITS {
-        #[allow(clippy::unnecessary_cast)] // the identity when Float is f64
         let wide = |x: Float| x as f64;
         return (wide(p.x) * wide(q.y) - wide(p.y) * wide(q.x)) as Float;
     }

@@ -10,9 +10,6 @@
 //! [`hit_object`] and [`BruteForce`] put every shape of lectures 02–04 behind
 //! one door for the rest of the course. Book: chapter 4.
 
-// The tests widen `Float` to f64 for their references: the identity in an f64 build.
-#![cfg_attr(test, allow(clippy::unnecessary_cast))]
-
 mod capped;
 mod cone;
 mod cylinder;

@@ -3,9 +3,6 @@
 //! colours, and each shows what it is for — checked against numbers derived
 //! by hand from the scene's description where there are any.
 
-// The references widen `Float` to f64: the identity in an f64 build.
-#![allow(clippy::useless_conversion)]
-
 use std::path::PathBuf;
 
 use l01_transforms::Camera;

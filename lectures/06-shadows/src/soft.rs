@@ -125,8 +125,6 @@ pub fn shade_area_light(
 }
 
 #[cfg(test)]
-// Widening `Float` to f64 is the identity in an f64 build.
-#[allow(clippy::useless_conversion)]
 mod tests {
     use super::*;
     use crate::testing::{object, see_through};

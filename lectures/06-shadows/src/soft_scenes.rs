@@ -4,9 +4,6 @@
 //! for every number of threads, and the noise of the penumbra falls as the
 //! samples grow.
 
-// Widening `Float` to f64 is the identity in an f64 build.
-#![allow(clippy::useless_conversion)]
-
 use std::ops::Range;
 
 use l01_transforms::Camera;

@@ -466,8 +466,6 @@ impl WideNode {
         let mut node = WideNode::EMPTY;
         for (i, &(bounds, child)) in list.iter().enumerate() {
             for a in 0..3 {
-                // The identity in f32, the only precision that builds this tree.
-                #[allow(clippy::unnecessary_cast)]
                 let (min, max) = (bounds.min[a] as f32, bounds.max[a] as f32);
                 (node.planes[a][i], node.planes[3 + a][i]) = (min, max);
             }
@@ -514,7 +512,6 @@ mod avx2 {
 
     impl WideRay {
         #[target_feature(enable = "avx2")]
-        #[allow(clippy::unnecessary_cast)] // the identity in f32, the only precision traversed here
         fn new<const WIDEN_EACH: bool>(ray: &BoxRay<WIDEN_EACH>) -> Self {
             let lanes = |v: &[Vec4; 3]| v.map(|lanes| _mm256_set1_ps(lanes.x as f32));
             WideRay {
@@ -531,7 +528,6 @@ mod avx2 {
         /// exactly as [`Node::hit_children`] tests one (the same operations
         /// in the same order, on the same numbers).
         #[target_feature(enable = "avx2")]
-        #[allow(clippy::unnecessary_cast)] // the identity in f32, the only precision traversed here
         fn hit_children<const WIDEN_EACH: bool>(
             &self,
             ray: &WideRay,
@@ -666,7 +662,6 @@ impl<const KZ: usize> ShearedRay<KZ> {
             // 03's edge_function: a 0 in f32 is recomputed in f64 (rare: rays through
             // an edge's line or a corner).
             if Float::MANTISSA_DIGITS < f64::MANTISSA_DIGITS && e.cmpeq(Vec4::ZERO).any() {
-                #[allow(clippy::unnecessary_cast)] // the identity when Float is f64
                 let wide = |v: Vec4, k: usize| v[k] as f64;
                 return Vec4::from_array(std::array::from_fn(|k| match e[k] == 0.0 {
                     true => (wide(p[0], k) * wide(q[1], k) - wide(p[1], k) * wide(q[0], k)) as Float,
@@ -976,7 +971,6 @@ mod tests {
         for (h, node) in nodes.iter().enumerate() {
             for (a, plane) in node.planes.iter().enumerate() {
                 for lane in 0..WIDTH {
-                    #[allow(clippy::unnecessary_cast)] // f32 is the only precision with wide nodes
                     let value = plane[lane] as f32;
                     wide.planes[a][WIDTH * h + lane] = value;
                 }
@@ -1091,7 +1085,6 @@ mod tests {
                             leaf_boxes[&child]
                         }
                     };
-                    #[allow(clippy::unnecessary_cast)] // f32, the only precision with wide nodes
                     let planes = [b.min.x, b.min.y, b.min.z, b.max.x, b.max.y, b.max.z].map(|p| p as f32);
                     assert_eq!(
                         (0..6).map(|a| node.planes[a][i]).collect::<Vec<_>>(),

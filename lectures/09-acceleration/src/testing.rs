@@ -2,9 +2,6 @@
 //! with the draws the tests need, f64 views of `Float` values for independent
 //! references, and the scenes the BVH is compared with brute force on.
 
-// Widening `Float` to f64 is the identity in an f64 build.
-#![allow(clippy::unnecessary_cast, clippy::useless_conversion)]
-
 use std::sync::Arc;
 
 use raylab::scene::{Mesh, Object, Shape, Transform};

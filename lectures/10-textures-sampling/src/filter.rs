@@ -52,8 +52,6 @@ pub fn filter_weight(filter: Filter, offset: Vec2) -> Float {
 }
 
 #[cfg(test)]
-// Widening `Float` to f64 is the identity in an f64 build.
-#[allow(clippy::useless_conversion)]
 mod tests {
     use super::*;
 

@@ -81,8 +81,6 @@ pub fn render_supersampled(
 }
 
 #[cfg(test)]
-// Widening `Float` to f64 is the identity in an f64 build.
-#[allow(clippy::useless_conversion)]
 mod tests {
     use super::*;
     use crate::testing::{covered_fraction, half_plane, pixel_coverage, render, spheres};

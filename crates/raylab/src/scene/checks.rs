@@ -52,7 +52,6 @@ fn digits(x: impl std::fmt::Display + std::fmt::LowerExp, magnitude: f64) -> Str
 
 /// [`number`] for a `Float`: its own shortest digits (an f32's `1e-45`, not
 /// the `1.401298464324817e-45` of its widening to f64).
-#[allow(clippy::useless_conversion, reason = "Float is f64 with the kit's f64 feature")]
 pub fn float(x: Float) -> String {
     digits(x, f64::from(x))
 }

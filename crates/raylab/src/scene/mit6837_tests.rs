@@ -575,7 +575,6 @@ fn the_course_checkerboard_scenes_load() {
 /// (found by corrupting scene files: `transparentColor 1e15` rendered to an image the writer
 /// refused as NaN).
 #[test]
-#[allow(clippy::unnecessary_cast)] // widening Float to f64: the identity in an f64 build
 fn colours_whose_products_overflow_are_refused_in_the_formats_words() {
     // g = MAX^¼·10: g⁵ (depth 5) is beyond the range in f32 and f64 alike.
     let g = (Float::MAX as f64).powf(0.25) * 10.0;

@@ -21,7 +21,6 @@ use super::{LightKind, Scene, Texture};
 use crate::math::Float;
 
 /// `x` in f64 (the identity in an f64 build).
-#[allow(clippy::useless_conversion, reason = "Float is f64 with the kit's f64 feature")]
 fn wide(x: Float) -> f64 {
     f64::from(x)
 }

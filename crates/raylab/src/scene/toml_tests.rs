@@ -688,7 +688,6 @@ fn files_that_are_not_utf8_or_endless_are_refused_with_where() {
 /// Values finite each, whose products overflow the precision built, are refused at load time
 /// with the key to blame, its value and the largest value it may have.
 #[test]
-#[allow(clippy::unnecessary_cast)] // widening Float to f64: the identity in an f64 build
 fn colours_whose_products_overflow_are_refused_with_the_largest_accepted_value() {
     // A background of half the largest float, summed over 4 eye rays: 2·MAX.
     let half = Float::MAX as f64 / 2.0;

@@ -185,8 +185,6 @@ trait Numbers {
 }
 
 impl Numbers for raylab::Float {
-    // Widening to f64 is the identity in an f64 build.
-    #[allow(clippy::useless_conversion)]
     fn numbers(&self) -> Vec<f64> {
         vec![f64::from(*self)]
     }

@@ -1,8 +1,5 @@
 //! The checks of `axis_angle.rs`: rotate_axis.
 
-#![allow(clippy::result_large_err)] // Failure is check.rs's report, returned by value as in every lecture
-#![allow(clippy::unnecessary_cast)] // widening Float to f64 for references is the identity in an f64 build
-
 use super::common::*;
 
 /// Rodrigues' rotation of vector `v` about the unit `k`, in f64:
@@ -84,7 +81,6 @@ pub(super) fn rotate_axis_cases(rotate_axis: AxisAngleFn) -> CheckResult {
 }
 
 #[cfg(test)]
-#[allow(clippy::result_large_err)]
 mod tests {
     use super::*;
     use crate::check::testing::caught;

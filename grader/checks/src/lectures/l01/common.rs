@@ -1,8 +1,5 @@
 //! What the checks of lecture 01's files share.
 
-#![allow(clippy::result_large_err)] // Failure is check.rs's report, returned by value as in every lecture
-#![allow(clippy::unnecessary_cast)] // widening Float to f64 for references is the identity in an f64 build
-
 pub(super) use l01_transforms::{CameraError, OrthographicCamera, PerspectiveCamera};
 pub(super) use raylab::math::consts::{FRAC_PI_2, TAU};
 pub(super) use raylab::{Float, Mat4, Ray, Vec3, Vec4, radians};

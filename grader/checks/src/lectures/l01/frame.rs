@@ -1,8 +1,5 @@
 //! The checks of `frame.rs`: frame and is_basis.
 
-#![allow(clippy::result_large_err)] // Failure is check.rs's report, returned by value as in every lecture
-#![allow(clippy::unnecessary_cast)] // widening Float to f64 for references is the identity in an f64 build
-
 use super::common::*;
 
 pub(super) fn frame_cases(frame: FrameFn) -> CheckResult {
@@ -146,7 +143,6 @@ pub(super) fn is_basis_any_units(is_basis: BasisFn) -> CheckResult {
 }
 
 #[cfg(test)]
-#[allow(clippy::result_large_err)]
 mod tests {
     use super::*;
     use crate::check::testing::caught;

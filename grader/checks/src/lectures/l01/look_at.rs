@@ -1,8 +1,5 @@
 //! The checks of `look_at.rs`: look_at, its degenerate cases.
 
-#![allow(clippy::result_large_err)] // Failure is check.rs's report, returned by value as in every lecture
-#![allow(clippy::unnecessary_cast)] // widening Float to f64 for references is the identity in an f64 build
-
 use super::common::*;
 
 pub(super) fn f64s(v: Vec3) -> [f64; 3] {
@@ -281,7 +278,6 @@ pub(super) fn look_at_degenerate(look_at: LookAtFn) -> CheckResult {
 }
 
 #[cfg(test)]
-#[allow(clippy::result_large_err)]
 mod tests {
     use super::*;
     use crate::check::testing::caught;

@@ -1,8 +1,5 @@
 //! The checks of `orthographic.rs`: OrthographicCamera::generate_ray.
 
-#![allow(clippy::result_large_err)] // Failure is check.rs's report, returned by value as in every lecture
-#![allow(clippy::unnecessary_cast)] // widening Float to f64 for references is the identity in an f64 build
-
 use super::common::*;
 use super::perspective::along_x;
 
@@ -64,7 +61,6 @@ pub(super) fn orthographic_cases(generate_ray: OrthographicFn) -> CheckResult {
 }
 
 #[cfg(test)]
-#[allow(clippy::result_large_err)]
 mod tests {
     use super::*;
     use crate::check::testing::caught;

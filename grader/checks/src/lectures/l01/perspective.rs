@@ -1,8 +1,5 @@
 //! The checks of `perspective.rs`: PerspectiveCamera::generate_ray.
 
-#![allow(clippy::result_large_err)] // Failure is check.rs's report, returned by value as in every lecture
-#![allow(clippy::unnecessary_cast)] // widening Float to f64 for references is the identity in an f64 build
-
 use super::common::*;
 
 /// A camera at (1, 2, 3) looking along +x: u = z, v = y, w = −x (u × v = w).
@@ -91,7 +88,6 @@ pub(super) fn perspective_cases(generate_ray: PerspectiveFn) -> CheckResult {
 }
 
 #[cfg(test)]
-#[allow(clippy::result_large_err)]
 mod tests {
     use super::*;
     use crate::check::testing::caught;

@@ -1,8 +1,5 @@
 //! The checks of `screen.rs`: screen_coords.
 
-#![allow(clippy::result_large_err)] // Failure is check.rs's report, returned by value as in every lecture
-#![allow(clippy::unnecessary_cast)] // widening Float to f64 for references is the identity in an f64 build
-
 use super::common::*;
 
 pub(super) fn screen_cases(screen_coords: ScreenFn) -> CheckResult {
@@ -59,7 +56,6 @@ pub(super) fn screen_cases(screen_coords: ScreenFn) -> CheckResult {
 }
 
 #[cfg(test)]
-#[allow(clippy::result_large_err)]
 mod tests {
     use super::*;
     use crate::check::testing::caught;

@@ -1,8 +1,5 @@
 //! The checks of `transforms.rs`: translate, scale, the axis rotations, transform_point and transform_vector.
 
-#![allow(clippy::result_large_err)] // Failure is check.rs's report, returned by value as in every lecture
-#![allow(clippy::unnecessary_cast)] // widening Float to f64 for references is the identity in an f64 build
-
 use super::common::*;
 
 pub(super) fn translate_cases(translate: VecToMat) -> CheckResult {
@@ -200,7 +197,6 @@ pub(super) fn transform_vector_cases(transform_vector: ApplyFn) -> CheckResult {
 }
 
 #[cfg(test)]
-#[allow(clippy::result_large_err)]
 mod tests {
     use super::*;
     use crate::check::testing::caught;

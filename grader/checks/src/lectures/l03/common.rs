@@ -1,9 +1,6 @@
 //! What the checks of lecture 03's files share: imports, the function types they test,
 //! tolerances and the show helpers.
 
-#![allow(clippy::result_large_err)] // Failure is check.rs's report, returned by value as in every lecture
-#![allow(clippy::unnecessary_cast)] // widening Float to f64 for references is the identity in an f64 build
-
 pub(super) use l03_polygons_triangles::TriangleHit;
 pub(super) use raylab::math::consts::PI;
 pub(super) use raylab::math::gamma;

@@ -1,8 +1,5 @@
 //! The checks of `mesh.rs`: hit_mesh.
 
-#![allow(clippy::result_large_err)] // Failure is check.rs's report, returned by value as in every lecture
-#![allow(clippy::unnecessary_cast)] // widening Float to f64 for references is the identity in an f64 build
-
 use super::common::*;
 use super::triangle::{LEAK, leak_tests};
 

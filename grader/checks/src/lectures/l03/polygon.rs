@@ -1,8 +1,5 @@
 //! The checks of `polygon.rs`: inside_crossings, winding_number, newell_normal, hit_polygon.
 
-#![allow(clippy::result_large_err)] // Failure is check.rs's report, returned by value as in every lecture
-#![allow(clippy::unnecessary_cast)] // widening Float to f64 for references is the identity in an f64 build
-
 use super::common::*;
 
 // ---- polygons --------------------------------------------------------------

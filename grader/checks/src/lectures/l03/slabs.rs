@@ -1,8 +1,5 @@
 //! The checks of `slabs.rs`: hit_slabs and hit_box.
 
-#![allow(clippy::result_large_err)] // Failure is check.rs's report, returned by value as in every lecture
-#![allow(clippy::unnecessary_cast)] // widening Float to f64 for references is the identity in an f64 build
-
 use super::common::*;
 
 // ---- slabs ---------------------------------------------------------------

@@ -1,9 +1,6 @@
 //! The checks of `triangle.rs`: the three ray–triangle tests, edge_function, interpolate_normal,
 //! hit_triangle, and the leak test of the watertight one.
 
-#![allow(clippy::result_large_err)] // Failure is check.rs's report, returned by value as in every lecture
-#![allow(clippy::unnecessary_cast)] // widening Float to f64 for references is the identity in an f64 build
-
 use super::common::*;
 use raylab_testing::meshes::{edge_and_vertex_rays, wobbly_octahedron};
 

@@ -1,8 +1,5 @@
 //! The checks of `capped.rs`: slab_z_span and first_crossing.
 
-#![allow(clippy::result_large_err)] // Failure is check.rs's report, returned by value as in every lecture
-#![allow(clippy::unnecessary_cast)] // widening Float to f64 for references is the identity in an f64 build
-
 use super::common::*;
 
 pub(super) fn span_cases(span: SpanFn) -> CheckResult {
@@ -123,7 +120,6 @@ pub(super) fn crossing_cases(crossing: CrossingFn) -> CheckResult {
 }
 
 #[cfg(test)]
-#[allow(clippy::result_large_err)]
 mod tests {
     use super::*;
     use crate::check::testing::caught;

@@ -1,8 +1,5 @@
 //! What the checks of lecture 04's files share.
 
-#![allow(clippy::result_large_err)] // Failure is check.rs's report, returned by value as in every lecture
-#![allow(clippy::unnecessary_cast)] // widening Float to f64 for references is the identity in an f64 build
-
 pub(super) use raylab::math::consts::{FRAC_PI_6, TAU};
 pub(super) use raylab::random::Rng;
 pub(super) use raylab::scene::Transform;

@@ -1,8 +1,5 @@
 //! The checks of `cone.rs`: hit_cone.
 
-#![allow(clippy::result_large_err)] // Failure is check.rs's report, returned by value as in every lecture
-#![allow(clippy::unnecessary_cast)] // widening Float to f64 for references is the identity in an f64 build
-
 use super::common::*;
 use super::cylinder::{FROM_INSIDE, expect_hit, no_rim_leaks};
 
@@ -158,7 +155,6 @@ pub(super) fn cone_cases(hit: ShapeFn) -> CheckResult {
 }
 
 #[cfg(test)]
-#[allow(clippy::result_large_err)]
 mod tests {
     use super::*;
     use crate::check::testing::caught;

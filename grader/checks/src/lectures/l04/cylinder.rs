@@ -1,8 +1,5 @@
 //! The checks of `cylinder.rs`: hit_cylinder, and what the cone's checks share with it (the rim rays, the far-origin case).
 
-#![allow(clippy::result_large_err)] // Failure is check.rs's report, returned by value as in every lecture
-#![allow(clippy::unnecessary_cast)] // widening Float to f64 for references is the identity in an f64 build
-
 use super::common::*;
 
 /// Expects a hit at `t` (relative TOL) with `normal` (absolute TOL) and `front`.
@@ -316,7 +313,6 @@ pub(super) fn far_origin(hit: ShapeFn, quadric: Quadric) -> CheckResult {
 }
 
 #[cfg(test)]
-#[allow(clippy::result_large_err)]
 mod tests {
     use super::*;
     use crate::check::testing::caught;

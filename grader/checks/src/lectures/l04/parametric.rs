@@ -1,8 +1,5 @@
 //! The checks of `parametric.rs`: parametric_normal.
 
-#![allow(clippy::result_large_err)] // Failure is check.rs's report, returned by value as in every lecture
-#![allow(clippy::unnecessary_cast)] // widening Float to f64 for references is the identity in an f64 build
-
 use super::common::*;
 
 /// The unit sphere s(θ, φ) = (sin θ cos φ, sin θ sin φ, cos θ) and its partials.
@@ -50,7 +47,6 @@ pub(super) fn parametric_cases(normal: ParametricFn) -> CheckResult {
 }
 
 #[cfg(test)]
-#[allow(clippy::result_large_err)]
 mod tests {
     use super::*;
     use crate::check::testing::caught;

@@ -1,8 +1,5 @@
 //! The checks of `transformed.rs`: ray_to_object, normal_to_world, hit_transformed.
 
-#![allow(clippy::result_large_err)] // Failure is check.rs's report, returned by value as in every lecture
-#![allow(clippy::unnecessary_cast)] // widening Float to f64 for references is the identity in an f64 build
-
 use super::common::*;
 
 /// T(1, 2, 3)·S(2, 0.5, 4) and its inverse written by hand: S(½, 2, ¼)·T(−1, −2, −3).
@@ -398,7 +395,6 @@ pub(super) fn extreme_scale(transformed: TransformedFn) -> CheckResult {
 }
 
 #[cfg(test)]
-#[allow(clippy::result_large_err)]
 mod tests {
     use super::*;
     use crate::check::testing::caught;

@@ -1,8 +1,5 @@
 //! The checks of `area_lights.rs`: concentric_disk and sample_light.
 
-// `Failure` is large (its optional images); see check.rs.
-#![allow(clippy::result_large_err)]
-
 use super::common::*;
 
 pub(super) fn disk_cases(disk: DiskFn) -> CheckResult {
@@ -197,7 +194,6 @@ pub(super) fn sample_light_cases(sample: SampleFn) -> CheckResult {
 }
 
 #[cfg(test)]
-#[allow(clippy::result_large_err)]
 mod tests {
     use super::*;
     use crate::check::testing::caught;

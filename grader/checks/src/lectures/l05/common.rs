@@ -1,8 +1,5 @@
 //! What the checks of lecture 05's files share.
 
-// `Failure` is large (its optional images); see check.rs.
-#![allow(clippy::result_large_err)]
-
 pub(super) use l05_shading::LightSample;
 pub(super) use raylab::scene::{Attenuation, Light, LightKind, Material, Specular};
 pub(super) use raylab::{BLACK, Color, Float, Hit, Ray, Vec2, Vec3, WHITE, radians};

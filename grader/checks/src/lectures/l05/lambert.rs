@@ -1,8 +1,5 @@
 //! The checks of `lambert.rs`: lambert.
 
-// `Failure` is large (its optional images); see check.rs.
-#![allow(clippy::result_large_err)]
-
 use super::common::*;
 
 pub(super) fn lambert_cases(lambert: LambertFn) -> CheckResult {
@@ -36,7 +33,6 @@ pub(super) fn lambert_cases(lambert: LambertFn) -> CheckResult {
 }
 
 #[cfg(test)]
-#[allow(clippy::result_large_err)]
 mod tests {
     use super::*;
     use crate::check::testing::caught;

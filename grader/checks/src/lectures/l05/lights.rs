@@ -1,8 +1,5 @@
 //! The checks of `lights.rs`: distance_falloff, spot_falloff, illuminate.
 
-// `Failure` is large (its optional images); see check.rs.
-#![allow(clippy::result_large_err)]
-
 use super::area_lights::rect;
 use super::common::*;
 
@@ -236,7 +233,6 @@ pub(super) fn illuminate_cases(illuminate: IlluminateFn) -> CheckResult {
 }
 
 #[cfg(test)]
-#[allow(clippy::result_large_err)]
 mod tests {
     use super::*;
     use crate::check::testing::caught;

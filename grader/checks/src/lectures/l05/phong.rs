@@ -1,8 +1,5 @@
 //! The checks of `phong.rs`: phong_specular and blinn_specular.
 
-// `Failure` is large (its optional images); see check.rs.
-#![allow(clippy::result_large_err)]
-
 use super::common::*;
 
 /// A cosine near 1 carries a few ε of rounding; raised to n, n times as much.
@@ -122,7 +119,6 @@ pub(super) fn blinn_cases(blinn: SpecularFn) -> CheckResult {
 }
 
 #[cfg(test)]
-#[allow(clippy::result_large_err)]
 mod tests {
     use super::*;
     use crate::check::testing::caught;

@@ -1,8 +1,5 @@
 //! The checks of `reflect.rs`: reflect.
 
-// `Failure` is large (its optional images); see check.rs.
-#![allow(clippy::result_large_err)]
-
 use super::common::*;
 
 pub(super) fn reflect_cases(reflect: ReflectFn) -> CheckResult {
@@ -46,7 +43,6 @@ pub(super) fn reflect_cases(reflect: ReflectFn) -> CheckResult {
 }
 
 #[cfg(test)]
-#[allow(clippy::result_large_err)]
 mod tests {
     use super::*;
     use crate::check::testing::caught;

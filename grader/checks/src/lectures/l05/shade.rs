@@ -1,8 +1,5 @@
 //! The checks of `shade.rs`: shade_light and shade_local.
 
-// `Failure` is large (its optional images); see check.rs.
-#![allow(clippy::result_large_err)]
-
 use super::common::*;
 
 pub(super) fn shade_light_cases(shade: ShadeLightFn) -> CheckResult {
@@ -139,7 +136,6 @@ pub(super) fn shade_local_cases(shade: ShadeLocalFn) -> CheckResult {
 }
 
 #[cfg(test)]
-#[allow(clippy::result_large_err)]
 mod tests {
     use super::*;
     use crate::check::testing::caught;

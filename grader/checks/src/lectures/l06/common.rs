@@ -1,8 +1,5 @@
 //! What the checks of lecture 06's files share.
 
-// `Failure` is large (its optional images); see check.rs.
-#![allow(clippy::result_large_err)]
-
 pub(super) use l05_shading::LightSample;
 pub(super) use l06_shadows::{ShadowMode, ShadowSettings, Surface, point_seed};
 pub(super) use raylab::random::Rng;

@@ -1,8 +1,5 @@
 //! The checks of `occlusion.rs`: occluded and transmittance.
 
-// `Failure` is large (its optional images); see check.rs.
-#![allow(clippy::result_large_err)]
-
 use super::common::*;
 
 pub(super) fn occluded_cases(occluded: OccludedFn) -> CheckResult {
@@ -203,7 +200,6 @@ pub(super) fn transmittance_cases(transmittance: TransmittanceFn) -> CheckResult
 }
 
 #[cfg(test)]
-#[allow(clippy::result_large_err)]
 mod tests {
     use super::*;
     use crate::check::testing::caught;

@@ -1,8 +1,5 @@
 //! The checks of `offset.rs`: offset_origin and the two naive offsets.
 
-// `Failure` is large (its optional images); see check.rs.
-#![allow(clippy::result_large_err)]
-
 use super::common::*;
 
 /// Checks one offset: moved along ±n only, to `side` (+1 or −1) of the surface, by
@@ -248,7 +245,6 @@ pub(super) fn fixed_normal_cases(offset: OffsetFn) -> CheckResult {
 }
 
 #[cfg(test)]
-#[allow(clippy::result_large_err)]
 mod tests {
     use super::*;
     use crate::check::testing::caught;

@@ -1,8 +1,5 @@
 //! The checks of `shade.rs`: visibility and shade_with_shadows.
 
-// `Failure` is large (its optional images); see check.rs.
-#![allow(clippy::result_large_err)]
-
 use super::common::*;
 
 /// Materials: 0 the grey floor (k_d = ½, opaque), 1 an opaque ball, 2 a ball of k_t = ½.
@@ -210,7 +207,6 @@ pub(super) fn shade_cases(shade: ShadeFn) -> CheckResult {
 }
 
 #[cfg(test)]
-#[allow(clippy::result_large_err)]
 mod tests {
     use super::*;
     use crate::check::testing::caught;

@@ -1,8 +1,5 @@
 //! The checks of `soft.rs`: stratified samples and shade_area_light.
 
-// `Failure` is large (its optional images); see check.rs.
-#![allow(clippy::result_large_err)]
-
 use super::common::*;
 use super::shade::{floor_hit, surface};
 
@@ -217,7 +214,6 @@ pub(super) fn area_cases(area: AreaFn) -> CheckResult {
 }
 
 #[cfg(test)]
-#[allow(clippy::result_large_err)]
 mod tests {
     use super::*;
     use crate::check::testing::caught;

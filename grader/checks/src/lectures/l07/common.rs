@@ -1,8 +1,5 @@
 //! What the checks of lecture 07's files share.
 
-// `Failure` is large (its optional images); see check.rs.
-#![allow(clippy::result_large_err)]
-
 pub(super) use l07_reflection_refraction::Interface;
 pub(super) use raylab::{Float, Hit, Interval, Ray, Vec3};
 

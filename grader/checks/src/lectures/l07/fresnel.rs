@@ -1,8 +1,5 @@
 //! The checks of `fresnel.rs`: schlick and fresnel_dielectric.
 
-// `Failure` is large (its optional images); see check.rs.
-#![allow(clippy::result_large_err)]
-
 use super::common::*;
 
 /// Schlick's R = R₀ + (1 − R₀)(1 − cos θ)⁵, with θ on the less dense side.
@@ -168,7 +165,6 @@ pub(super) fn fresnel_cases(fresnel: FresnelFn) -> CheckResult {
 }
 
 #[cfg(test)]
-#[allow(clippy::result_large_err)]
 mod tests {
     use super::*;
     use crate::check::testing::caught;

@@ -1,8 +1,5 @@
 //! The checks of `mirror.rs`: mirror_direction.
 
-// `Failure` is large (its optional images); see check.rs.
-#![allow(clippy::result_large_err)]
-
 use super::common::*;
 
 pub(super) fn mirror_cases(mirror: MirrorFn) -> CheckResult {
@@ -34,7 +31,6 @@ pub(super) fn mirror_cases(mirror: MirrorFn) -> CheckResult {
 }
 
 #[cfg(test)]
-#[allow(clippy::result_large_err)]
 mod tests {
     use super::*;
     use crate::check::testing::caught;

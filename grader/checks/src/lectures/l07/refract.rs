@@ -1,8 +1,5 @@
 //! The checks of `refract.rs`: interface, refract, the critical angle and the tiny glass sphere.
 
-// `Failure` is large (its optional images); see check.rs.
-#![allow(clippy::result_large_err)]
-
 use super::common::*;
 
 pub(super) fn interface_cases(interface: InterfaceFn) -> CheckResult {
@@ -399,7 +396,6 @@ pub(super) fn tiny_glass_sphere(refract: RefractFn, interface: InterfaceFn) -> C
 }
 
 #[cfg(test)]
-#[allow(clippy::result_large_err)]
 mod tests {
     use super::*;
     use crate::check::testing::caught;

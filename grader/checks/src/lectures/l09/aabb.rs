@@ -1,8 +1,5 @@
 //! The checks of `aabb.rs`: Aabb::union, union_point, surface_area and the slab test Aabb::hit.
 
-// Widening `Float` to f64 for exact comparisons is a cast in f32 builds and none in f64 ones.
-#![allow(clippy::unnecessary_cast)]
-
 use super::common::*;
 use crate::check::{ray, show_span};
 use raylab_testing::exact::{Ratio, exact_span};
@@ -399,7 +396,6 @@ pub(super) fn slab_boundaries(hit: SlabFn) -> CheckResult {
 }
 
 #[cfg(test)]
-#[allow(clippy::unnecessary_cast)] // as in `code`
 mod tests {
     use super::*;
     use crate::check::testing::caught;

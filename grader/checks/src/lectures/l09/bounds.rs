@@ -1,8 +1,5 @@
 //! The checks of `bounds.rs`: sphere_bounds, triangle_bounds, transform_bounds.
 
-// Widening `Float` to f64 for exact comparisons is a cast in f32 builds and none in f64 ones.
-#![allow(clippy::unnecessary_cast)]
-
 use super::common::*;
 
 /// One step outward from the sum (in f64) is what the box may give at most; at least the
@@ -172,7 +169,6 @@ pub(super) fn transform_cases(bounds: TransformBoundsFn) -> CheckResult {
 }
 
 #[cfg(test)]
-#[allow(clippy::unnecessary_cast)] // as in `code`
 mod tests {
     use super::*;
     use crate::check::testing::caught;

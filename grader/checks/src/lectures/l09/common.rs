@@ -1,8 +1,5 @@
 //! What the checks of lecture 09's files share.
 
-// Widening `Float` to f64 for exact comparisons is a cast in f32 builds and none in f64 ones.
-#![allow(clippy::unnecessary_cast)]
-
 pub(super) use std::sync::Arc;
 
 pub(super) use l04_quadrics_transforms::BruteForce;

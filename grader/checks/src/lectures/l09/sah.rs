@@ -1,8 +1,5 @@
 //! The checks of `sah.rs`: sah_split.
 
-// Widening `Float` to f64 for exact comparisons is a cast in f32 builds and none in f64 ones.
-#![allow(clippy::unnecessary_cast)]
-
 use super::common::*;
 
 /// A unit cube from x = `x` (y, z in [0, 1]) holding `count` primitives.
@@ -114,7 +111,6 @@ pub(super) fn sah_cases(sah: SahFn) -> CheckResult {
 }
 
 #[cfg(test)]
-#[allow(clippy::unnecessary_cast)] // as in `code`
 mod tests {
     use super::*;
     use crate::check::testing::caught;

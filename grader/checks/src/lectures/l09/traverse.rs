@@ -1,8 +1,5 @@
 //! The checks of `traverse.rs`: Bvh::closest_hit and any_hit.
 
-// Widening `Float` to f64 for exact comparisons is a cast in f32 builds and none in f64 ones.
-#![allow(clippy::unnecessary_cast)]
-
 use super::common::*;
 
 pub(super) use raylab_testing::scenes::sphere;
@@ -321,7 +318,6 @@ pub(super) fn any_cases(any: AnyFn) -> CheckResult {
 }
 
 #[cfg(test)]
-#[allow(clippy::unnecessary_cast)] // as in `code`
 mod tests {
     use super::*;
     use crate::check::testing::caught;

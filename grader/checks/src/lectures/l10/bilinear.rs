@@ -1,8 +1,5 @@
 //! The checks of `bilinear.rs`: bilinear.
 
-// Widening `Float` to f64 for exact comparisons is a cast in f32 builds and none in f64 ones.
-#![allow(clippy::unnecessary_cast)]
-
 use super::common::*;
 
 /// A 4 × 2 image whose pixel (i, j) is (i, j, 1): every value, every mean of two or four of
@@ -108,7 +105,6 @@ pub(super) fn bilinear_cases(bilinear: BilinearFn) -> CheckResult {
 }
 
 #[cfg(test)]
-#[allow(clippy::unnecessary_cast)] // as in `code`
 mod tests {
     use super::*;
     use crate::check::testing::caught;

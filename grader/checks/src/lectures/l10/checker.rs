@@ -1,8 +1,5 @@
 //! The checks of `checker.rs`: checker and checker_3d.
 
-// Widening `Float` to f64 for exact comparisons is a cast in f32 builds and none in f64 ones.
-#![allow(clippy::unnecessary_cast)]
-
 use super::common::*;
 
 pub(super) const A: Color = Color::new(1.0, 1.0, 1.0);
@@ -97,7 +94,6 @@ pub(super) fn checker_3d_cases(checker_3d: Checker3dFn) -> CheckResult {
 }
 
 #[cfg(test)]
-#[allow(clippy::unnecessary_cast)] // as in `code`
 mod tests {
     use super::*;
     use crate::check::testing::caught;

@@ -1,8 +1,5 @@
 //! What the checks of lecture 10's files share.
 
-// Widening `Float` to f64 for exact comparisons is a cast in f32 builds and none in f64 ones.
-#![allow(clippy::unnecessary_cast)]
-
 pub(super) use std::collections::HashSet;
 
 pub(super) use l01_transforms::Camera;

@@ -1,8 +1,5 @@
 //! The checks of `filter.rs`: filter_weight.
 
-// Widening `Float` to f64 for exact comparisons is a cast in f32 builds and none in f64 ones.
-#![allow(clippy::unnecessary_cast)]
-
 use super::common::*;
 
 pub(super) fn filter_cases(filter_weight: FilterFn) -> CheckResult {
@@ -87,7 +84,6 @@ pub(super) fn filter_cases(filter_weight: FilterFn) -> CheckResult {
 }
 
 #[cfg(test)]
-#[allow(clippy::unnecessary_cast)] // as in `code`
 mod tests {
     use super::*;
     use crate::check::testing::caught;

@@ -6,9 +6,6 @@
 //! Tolerances are multiples of the student's precision ε, derived below; the reference's
 //! worst errors are measured in this module's tests.
 
-// Widening `Float` to f64 for exact comparisons is a cast in f32 builds and none in f64 ones.
-#![allow(clippy::unnecessary_cast)]
-
 use raylab::random::PERLIN_PERMUTATION;
 
 use super::common::*;

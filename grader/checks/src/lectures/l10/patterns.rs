@@ -1,8 +1,5 @@
 //! The checks of `patterns.rs`: sample_offsets.
 
-// Widening `Float` to f64 for exact comparisons is a cast in f32 builds and none in f64 ones.
-#![allow(clippy::unnecessary_cast)]
-
 use super::common::*;
 
 /// The grid cell of each sample in a cols × rows grid, by floor: exact for power-of-two grids.
@@ -161,7 +158,6 @@ pub(super) fn sampling_cases(sample_offsets: SamplesFn) -> CheckResult {
 }
 
 #[cfg(test)]
-#[allow(clippy::unnecessary_cast)] // as in `code`
 mod tests {
     use super::*;
     use crate::check::testing::caught;

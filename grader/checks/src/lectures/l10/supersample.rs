@@ -1,8 +1,5 @@
 //! The checks of `supersample.rs`: render_supersampled.
 
-// Widening `Float` to f64 for exact comparisons is a cast in f32 builds and none in f64 ones.
-#![allow(clippy::unnecessary_cast)]
-
 use super::common::*;
 
 /// The white half-plane y < slope·x + intercept in a 1 × 1 image: one pixel of 2 × 2 units.
@@ -161,7 +158,6 @@ pub(super) fn supersampling_cases(render: SupersampleFn) -> CheckResult {
 }
 
 #[cfg(test)]
-#[allow(clippy::unnecessary_cast)] // as in `code`
 mod tests {
     use super::*;
     use crate::check::testing::caught;

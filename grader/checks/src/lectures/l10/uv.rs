@@ -1,8 +1,5 @@
 //! The checks of `uv.rs`: sphere_uv, plane_uv, triangle_uv.
 
-// Widening `Float` to f64 for exact comparisons is a cast in f32 builds and none in f64 ones.
-#![allow(clippy::unnecessary_cast)]
-
 use super::common::*;
 
 pub(super) const SPHERE_UV: &str = "u = ½ + atan2(−z, x)/2π, v = ½ + atan2(y, √(x² + z²))/π";
@@ -155,7 +152,6 @@ pub(super) fn triangle_cases(triangle_uv: TriangleUvFn) -> CheckResult {
 }
 
 #[cfg(test)]
-#[allow(clippy::unnecessary_cast)] // as in `code`
 mod tests {
     use super::*;
     use crate::check::testing::caught;
