@@ -26,7 +26,7 @@ use raylab_protocol::{VIEW_DATA, VIEW_MISSING};
 use crate::check::{CheckResult, Failure, Images, Info, Kind, Meta, fail};
 use crate::judge;
 use crate::path;
-use crate::stages::{self, FINAL_STAGE};
+use crate::stages::{self, Draws, FINAL_STAGE};
 
 /// A pixel differs when one of its 8-bit sRGB channels moves by more than
 /// this many steps: the f32 and f64 builds differ by a step or two where
@@ -163,7 +163,7 @@ pub fn infos() -> Vec<Info> {
 /// scenes' geometry; for the others the geometry is only compared to explain
 /// a failed image.
 fn has_geometry_check(lecture: &str) -> bool {
-    matches!(lecture, "02" | "03" | "04" | "09")
+    stages::stage(lecture).is_some_and(|s| s.geometry_graded)
 }
 
 /// Runs `NN/geometry/S`, `NN/image/S` or `10/final/NN-S`, writing images
@@ -244,39 +244,23 @@ pub(crate) fn stages_of(file: &SceneFile) -> Vec<&str> {
 }
 
 /// The three geometry images of `scene` drawn with the intersections of the
-/// scene's lecture (see the module documentation).
+/// scene's lecture (its stage's `geometry`; see the module documentation).
 #[allow(unused_variables)]
 pub fn geometry_images(lecture: &str, scene: &Scene) -> Result<[Image; 3], String> {
     #[cfg(feature = "l02")]
     {
         use l01_transforms::Camera;
         use l02_ray_casting::{depth_image, normal_image, object_id_image};
-        let camera =
-            Camera::from_scene(&scene.camera, scene.width, scene.height).map_err(|e| e.to_string())?;
-        let (w, h) = (scene.width, scene.height);
-        macro_rules! draw {
-            ($objects:expr) => {{
-                let objects = $objects;
-                Ok([
-                    object_id_image(&camera, &objects, w, h),
-                    depth_image(&camera, &objects, w, h),
-                    normal_image(&camera, &objects, w, h),
-                ])
-            }};
-        }
-        match lecture {
-            "02" => return draw!(l02_ray_casting::Group::new(&scene.objects)),
-            #[cfg(feature = "l03")]
-            "03" => return draw!(crate::scene_objects::Lecture03(&scene.objects)),
-            #[cfg(feature = "l09")]
-            "09" => {
-                let objects = l09_acceleration::intersector_for(&scene.objects);
-                return draw!(objects.as_ref());
-            }
-            #[cfg(feature = "l04")]
-            _ => return draw!(l04_quadrics_transforms::BruteForce::new(&scene.objects)),
-            #[allow(unreachable_patterns)]
-            _ => {}
+        let finds = stages::stage(lecture).map_or(stages::Finds::BruteForce, |s| s.geometry);
+        if let Some(objects) = stages::finder(finds, scene) {
+            let camera =
+                Camera::from_scene(&scene.camera, scene.width, scene.height).map_err(|e| e.to_string())?;
+            let (w, h, objects) = (scene.width, scene.height, objects.as_ref());
+            return Ok([
+                object_id_image(&camera, &objects, w, h),
+                depth_image(&camera, &objects, w, h),
+                normal_image(&camera, &objects, w, h),
+            ]);
         }
     }
     Err(format!("the intersections for lecture {lecture}'s scenes are not built"))
@@ -500,7 +484,8 @@ fn check_image(file: &SceneFile, stage: &str, dir: &Path) -> CheckResult {
         Some(Ok(c)) => view_pixel(&c.expected, &yours, (x, y)),
         _ => (x, y),
     });
-    let cause = if stage == "01" {
+    let draws = stages::stage(stage).map(|s| s.draws);
+    let cause = if draws == Some(Draws::Sky) {
         judge::judge_only(|| camera_diagnosis(&yours))
     } else {
         let geometry = student_geometry(&file.lecture, &scene);
@@ -702,7 +687,8 @@ fn shading_diagnosis(
         }
     }
     let share = |n: usize| n as f64 / total.max(1) as f64;
-    let headlight = matches!(stage, "02" | "03" | "04" | "09");
+    let draws = stages::stage(stage).map_or(Draws::Complete, |s| s.draws);
+    let headlight = draws == Draws::Headlight;
     if nan > 0 {
         Seen::Symptom(format!(
             "{nan} of your pixels are NaN or infinite: a division by zero or the sqrt of a negative number"
@@ -720,8 +706,8 @@ fn shading_diagnosis(
         Seen::Symptom("the shading differs where the surface faces away from every light (N·L ≤ 0): clamp with max(N·L, 0) \
          in the diffuse and the specular terms"
             .into())
-    } else if share(glossy) >= 0.5 && stage >= "07" {
-        Seen::Guess(if stage == "07" {
+    } else if share(glossy) >= 0.5 && draws.mirrors() {
+        Seen::Guess(if draws == Draws::Mirrored {
             "the differences are on reflective or transparent objects, which show the sky in your mirror and \
              refracted directions: check 07 mirror_direction, interface and refract"
                 .into()
@@ -730,7 +716,7 @@ fn shading_diagnosis(
              (07 mirror_direction, refract, fresnel_dielectric; 08 trace and its weights)"
                 .into()
         })
-    } else if share(isolated) >= 0.3 && share(darker) >= 0.7 && stage >= "06" {
+    } else if share(isolated) >= 0.3 && share(darker) >= 0.7 && draws.shadows() {
         Seen::Symptom("speckled dark pixels on lit surfaces: shadow acne. Offset the shadow ray's origin off the surface \
          (06 offset_origin) and ignore blockers beyond the light"
             .into())
@@ -739,7 +725,7 @@ fn shading_diagnosis(
          intensity, or a colour multiplied twice"
             .into())
     } else if share(darker) <= 0.2 {
-        Seen::Guess(if stage == "05" {
+        Seen::Guess(if draws == Draws::Local {
             "your image is brighter where it differs: light from behind the surface (max(N·L, 0)), a \
              missing falloff, or a colour added twice"
                 .into()

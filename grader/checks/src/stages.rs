@@ -23,69 +23,241 @@
 
 use raylab::{Color, Image, Ray, Scene, Vec3};
 
-/// What stage `lecture` draws, in one line (the image checks' `about`).
-pub fn about(lecture: &str) -> &'static str {
-    match lecture {
-        "01" => "the camera's rays, coloured by direction (and origin), against the snapshot (stage 01)",
-        "02" => "02's spheres and planes, closest hit under a headlight, against the snapshot (stage 02)",
-        "03" => "03's boxes, polygons and meshes under a headlight, against the snapshot (stage 03)",
-        "04" => "04's quadrics and transformed objects under a headlight, against the snapshot (stage 04)",
-        "05" => "local shading (05) of 04's intersections, against the snapshot (stage 05)",
-        "06" => "local shading with shadow rays (06), against the snapshot (stage 06)",
-        "07" => "local shading, mirrors and glass showing the sky in 07's directions (stage 07)",
-        "08" => "the Whitted ray tree of 08, against the snapshot (stage 08)",
-        "09" => "09's hierarchy under the headlight of stages 02–04, against the snapshot (stage 09)",
-        _ => "the complete tracer (textures, supersampling) against the snapshot (stage 10)",
+/// One lecture's stage: what its pictures are drawn with and how they are explained. The
+/// declaration of the stages is [`STAGES`], one row per lecture; everything else asks it.
+#[derive(Clone, Copy, Debug)]
+pub struct Stage {
+    /// The lecture whose scenes it draws: `02`.
+    pub lecture: &'static str,
+    /// What it draws, in one line (the image checks' `about`).
+    pub about: &'static str,
+    /// What it makes of each eye ray.
+    pub draws: Draws,
+    /// The intersector it finds hits with.
+    pub finds: Finds,
+    /// The intersector its scenes' geometry images (object ids, depths, normals) are drawn
+    /// with, to compare with the snapshots': the lecture's own intersections where it teaches
+    /// some, 04's brute force elsewhere.
+    pub geometry: Finds,
+    /// Whether those geometry images are checks of their own (`NN/geometry/S`): the lectures
+    /// that teach intersections. Elsewhere the geometry only explains a failed picture.
+    pub geometry_graded: bool,
+    /// It draws with the exercises of [`DRAWN_WITH`] of the lectures before this one: when one
+    /// of them fails, its failed picture is blocked by it (see [`needs`]).
+    pub needs_before: &'static str,
+}
+
+/// What a stage makes of each eye ray.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Draws {
+    /// The ray's direction (and origin) as a colour: [`sky`].
+    Sky,
+    /// The closest hit under a light at the eye: [`headlight`].
+    Headlight,
+    /// 05's local shading, every light unblocked.
+    Local,
+    /// 06's shading with shadow rays.
+    Shadowed,
+    /// 05's local shading plus the sky in 07's mirror and refracted directions.
+    Mirrored,
+    /// 08's Whitted tracer over 04's brute force.
+    Whitted,
+    /// The complete tracer: textures, the hierarchy, supersampling.
+    Complete,
+}
+
+impl Draws {
+    /// Whether the picture is shaded by the lectures' shading (05 on): the stages whose
+    /// pictures have calls on their path (`crate::path`).
+    pub fn shades(self) -> bool {
+        !matches!(self, Draws::Sky | Draws::Headlight)
     }
+
+    /// Whether it casts shadow rays (06's shading).
+    pub fn shadows(self) -> bool {
+        matches!(self, Draws::Shadowed | Draws::Whitted | Draws::Complete)
+    }
+
+    /// Whether mirrors and glass show something in 07's directions.
+    pub fn mirrors(self) -> bool {
+        matches!(self, Draws::Mirrored | Draws::Whitted | Draws::Complete)
+    }
+
+    /// Whether it traces lecture 08's ray tree.
+    pub fn traces(self) -> bool {
+        matches!(self, Draws::Whitted | Draws::Complete)
+    }
+}
+
+/// The intersector a stage finds hits with.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Finds {
+    /// None: the camera's rays alone.
+    Nothing,
+    /// 02's group of spheres and planes.
+    Group,
+    /// 03's boxes, polygons and meshes besides.
+    Shapes,
+    /// 04's brute force over every shape, transforms included.
+    BruteForce,
+    /// 09's choice: a hierarchy where the scene has enough primitives, brute force otherwise.
+    Hierarchy,
+}
+
+/// The stages, in course order: the declaration every question about a stage is answered from
+/// (the image checks, their diagnosis, the calls on a picture's path, `render`, the report's
+/// trees). The last is the complete tracer, [`FINAL_STAGE`], which also draws every earlier
+/// lecture's scenes (`10/final/NN-S`).
+pub const STAGES: &[Stage] = &[
+    Stage {
+        lecture: "01",
+        about: "the camera's rays, coloured by direction (and origin), against the snapshot (stage 01)",
+        draws: Draws::Sky,
+        finds: Finds::Nothing,
+        geometry: Finds::BruteForce,
+        geometry_graded: false,
+        needs_before: "01",
+    },
+    Stage {
+        lecture: "02",
+        about: "02's spheres and planes, closest hit under a headlight, against the snapshot (stage 02)",
+        draws: Draws::Headlight,
+        finds: Finds::Group,
+        geometry: Finds::Group,
+        geometry_graded: true,
+        needs_before: "02",
+    },
+    Stage {
+        lecture: "03",
+        about: "03's boxes, polygons and meshes under a headlight, against the snapshot (stage 03)",
+        draws: Draws::Headlight,
+        finds: Finds::Shapes,
+        geometry: Finds::Shapes,
+        geometry_graded: true,
+        needs_before: "03",
+    },
+    Stage {
+        lecture: "04",
+        about: "04's quadrics and transformed objects under a headlight, against the snapshot (stage 04)",
+        draws: Draws::Headlight,
+        finds: Finds::BruteForce,
+        geometry: Finds::BruteForce,
+        geometry_graded: true,
+        needs_before: "04",
+    },
+    Stage {
+        lecture: "05",
+        about: "local shading (05) of 04's intersections, against the snapshot (stage 05)",
+        draws: Draws::Local,
+        finds: Finds::BruteForce,
+        geometry: Finds::BruteForce,
+        geometry_graded: false,
+        needs_before: "05",
+    },
+    Stage {
+        lecture: "06",
+        about: "local shading with shadow rays (06), against the snapshot (stage 06)",
+        draws: Draws::Shadowed,
+        finds: Finds::BruteForce,
+        geometry: Finds::BruteForce,
+        geometry_graded: false,
+        needs_before: "06",
+    },
+    // 07 draws with 05's shading, not 06's.
+    Stage {
+        lecture: "07",
+        about: "local shading, mirrors and glass showing the sky in 07's directions (stage 07)",
+        draws: Draws::Mirrored,
+        finds: Finds::BruteForce,
+        geometry: Finds::BruteForce,
+        geometry_graded: false,
+        needs_before: "06",
+    },
+    Stage {
+        lecture: "08",
+        about: "the Whitted ray tree of 08, against the snapshot (stage 08)",
+        draws: Draws::Whitted,
+        finds: Finds::BruteForce,
+        geometry: Finds::BruteForce,
+        geometry_graded: false,
+        needs_before: "08",
+    },
+    // 09 draws with the intersections of 01–04 and its own hierarchy.
+    Stage {
+        lecture: "09",
+        about: "09's hierarchy under the headlight of stages 02–04, against the snapshot (stage 09)",
+        draws: Draws::Headlight,
+        finds: Finds::Hierarchy,
+        geometry: Finds::Hierarchy,
+        geometry_graded: true,
+        needs_before: "05",
+    },
+    // The hierarchy is left out of 10's needs: most scenes are drawn without one (32 primitives
+    // or fewer), and where a hierarchy draws a scene wrong, `09/geometry/…` names it.
+    Stage {
+        lecture: "10",
+        about: "the complete tracer (textures, supersampling) against the snapshot (stage 10)",
+        draws: Draws::Complete,
+        finds: Finds::Hierarchy,
+        geometry: Finds::BruteForce,
+        geometry_graded: false,
+        needs_before: "09",
+    },
+];
+
+/// The exercises the stages draw with, in course order: a stage needs those of the lectures
+/// before its row's `needs_before`.
+const DRAWN_WITH: &[&str] = &[
+    "01/look_at",
+    "01/screen_coords",
+    "01/PerspectiveCamera::generate_ray",
+    "01/OrthographicCamera::generate_ray",
+    "02/hit_sphere_stable",
+    "02/hit_plane",
+    "02/closest_hit",
+    "03/hit_box",
+    "03/hit_polygon",
+    "03/hit_triangle",
+    "03/hit_mesh",
+    "04/hit_cylinder",
+    "04/hit_cone",
+    "04/hit_transformed",
+    "05/shade_local",
+    "06/shade_with_shadows",
+    "07/mirror_direction",
+    "07/interface",
+    "07/refract",
+    "07/fresnel_dielectric",
+    "08/trace_ray",
+    "08/render",
+];
+
+/// Lecture `lecture`'s stage; `None` for a lecture without one.
+pub fn stage(lecture: &str) -> Option<&'static Stage> {
+    STAGES.iter().find(|s| s.lecture == lecture)
+}
+
+/// The lecture whose stage is the complete tracer, and that grades every
+/// other lecture's scenes with it (`10/final/NN-S`): the last row of [`STAGES`].
+pub const FINAL_STAGE: &str = STAGES[STAGES.len() - 1].lecture;
+
+/// The first stage: the camera alone.
+pub const FIRST_STAGE: &str = STAGES[0].lecture;
+
+/// What stage `lecture` draws, in one line (the image checks' `about`); a lecture without a
+/// stage of its own is drawn by the complete tracer.
+pub fn about(lecture: &str) -> &'static str {
+    stage(lecture).unwrap_or(&STAGES[STAGES.len() - 1]).about
 }
 
 /// The exercises of earlier lectures a stage draws with: when one of them
 /// fails, a failed image check of this lecture is reported as blocked by it
-/// (the earlier exercise is at fault, not this lecture's). Lecture 09's
-/// hierarchy is left out of stage 10's: most scenes are drawn without one
-/// (32 primitives or fewer), and where a hierarchy draws a scene wrong, the
-/// geometry comparison names `09/geometry/…`.
+/// (the earlier exercise is at fault, not this lecture's).
 pub fn needs(lecture: &str) -> &'static [&'static str] {
-    // The exercises the stages draw with, in course order; each stage needs those of the
-    // lectures before a bound.
-    const DRAWN_WITH: &[&str] = &[
-        "01/look_at",
-        "01/screen_coords",
-        "01/PerspectiveCamera::generate_ray",
-        "01/OrthographicCamera::generate_ray",
-        "02/hit_sphere_stable",
-        "02/hit_plane",
-        "02/closest_hit",
-        "03/hit_box",
-        "03/hit_polygon",
-        "03/hit_triangle",
-        "03/hit_mesh",
-        "04/hit_cylinder",
-        "04/hit_cone",
-        "04/hit_transformed",
-        "05/shade_local",
-        "06/shade_with_shadows",
-        "07/mirror_direction",
-        "07/interface",
-        "07/refract",
-        "07/fresnel_dielectric",
-        "08/trace_ray",
-        "08/render",
-    ];
-    // Stages 05 and 09 draw with the intersections of 01–04; 07 with 05's shading, not 06's.
-    let before = match lecture {
-        "05" | "09" => "05",
-        "07" => "06",
-        "10" => "09",
-        other => other,
-    };
+    let before = stage(lecture).map_or(lecture, |s| s.needs_before);
     let count = DRAWN_WITH.iter().take_while(|need| need[..2] < *before).count();
     &DRAWN_WITH[..count]
 }
-
-/// The lecture whose stage is the complete tracer, and that grades every
-/// other lecture's scenes with it (`10/final/NN-S`).
-pub const FINAL_STAGE: &str = "10";
 
 /// Whether stage `lecture`'s code is in this build (its lecture and the ones it draws with
 /// compiled: the lecture's feature turns those on; the final stage's is every lecture).
@@ -132,6 +304,9 @@ pub fn headlight(scene: &Scene, ray: &Ray, hit: &raylab::Hit) -> Color {
 /// Scene `scene` drawn by stage `lecture`.
 #[allow(unused_variables)]
 pub fn render(lecture: &str, scene: &Scene) -> Result<Image, String> {
+    let unbuilt =
+        || format!("stage {lecture} is not in this build: its lecture or one it draws with does not compile");
+    let Some(stage) = stage(lecture).filter(|_| built(lecture)) else { return Err(unbuilt()) };
     #[cfg(feature = "l01")]
     {
         let camera = l01_transforms::Camera::from_scene(&scene.camera, scene.width, scene.height)
@@ -152,22 +327,25 @@ pub fn render(lecture: &str, scene: &Scene) -> Result<Image, String> {
             ))
         };
         let headlit: Shade = &|ray, hit| headlight(scene, ray, hit);
-        let objects = intersector(lecture, scene);
-        match (lecture, objects.as_deref()) {
-            ("01", _) => return Ok(pixels(&sky)),
-            ("02" | "03" | "04" | "09", Some(objects)) => return drawn(objects, headlit),
+        // The tracing stages find their own hits.
+        let objects = if stage.draws.traces() { None } else { intersector(lecture, scene) };
+        match (stage.draws, objects.as_deref()) {
+            (Draws::Sky, _) => return Ok(pixels(&sky)),
+            (Draws::Headlight, Some(objects)) => return drawn(objects, headlit),
             #[cfg(feature = "l05")]
-            ("05", Some(objects)) => return drawn(objects, &|ray, hit| local(scene, ray, hit)),
+            (Draws::Local, Some(objects)) => return drawn(objects, &|ray, hit| local(scene, ray, hit)),
             #[cfg(feature = "l06")]
-            ("06", Some(objects)) => return drawn(objects, &|ray, hit| shadowed(scene, objects, ray, hit)),
+            (Draws::Shadowed, Some(objects)) => {
+                return drawn(objects, &|ray, hit| shadowed(scene, objects, ray, hit));
+            }
             #[cfg(feature = "l07")]
-            ("07", Some(objects)) => return drawn(objects, &|ray, hit| mirrored(scene, ray, hit)),
+            (Draws::Mirrored, Some(objects)) => return drawn(objects, &|ray, hit| mirrored(scene, ray, hit)),
             #[cfg(feature = "l08")]
-            ("08", _) => {
+            (Draws::Whitted, _) => {
                 return l08_ray_tree::render_scene(scene, &scene_settings(scene)).map(|(image, _)| image);
             }
             #[cfg(feature = "complete")]
-            ("10", _) => {
+            (Draws::Complete, _) => {
                 use crate::tracer::{render_scene, scene_sampling};
                 return render_scene(scene, None, &scene_settings(scene), scene_sampling(scene))
                     .map(|(image, _)| image);
@@ -175,25 +353,27 @@ pub fn render(lecture: &str, scene: &Scene) -> Result<Image, String> {
             _ => {}
         }
     }
-    Err(format!("stage {lecture} is not in this build: its lecture or one it draws with does not compile"))
+    Err(unbuilt())
 }
 
-/// The intersector stage `lecture` finds the closest hits with: 02's group, 03's shapes, 04's
-/// brute force (stages 04–08), 09's choice of hierarchy; `None` at the other stages or where it
-/// is not built.
-#[allow(unused_variables)]
+/// The intersector stage `lecture` finds the closest hits with (its row's [`Finds`]); `None`
+/// at a stage that finds none, or where it is not built.
 pub fn intersector<'a>(lecture: &str, scene: &'a Scene) -> Option<Box<dyn raylab::Intersector + 'a>> {
-    match lecture {
+    finder(stage(lecture)?.finds, scene)
+}
+
+/// The intersector `finds` names, over `scene`'s objects, where it is built.
+#[allow(unused_variables)]
+pub fn finder(finds: Finds, scene: &Scene) -> Option<Box<dyn raylab::Intersector + '_>> {
+    match finds {
         #[cfg(feature = "l02")]
-        "02" => Some(Box::new(l02_ray_casting::Group::new(&scene.objects))),
+        Finds::Group => Some(Box::new(l02_ray_casting::Group::new(&scene.objects))),
         #[cfg(feature = "l03")]
-        "03" => Some(Box::new(crate::scene_objects::Lecture03(&scene.objects))),
+        Finds::Shapes => Some(Box::new(crate::scene_objects::Lecture03(&scene.objects))),
         #[cfg(feature = "l04")]
-        "04" | "05" | "06" | "07" | "08" => {
-            Some(Box::new(l04_quadrics_transforms::BruteForce::new(&scene.objects)))
-        }
+        Finds::BruteForce => Some(Box::new(l04_quadrics_transforms::BruteForce::new(&scene.objects))),
         #[cfg(feature = "l09")]
-        "09" => Some(l09_acceleration::intersector_for(&scene.objects)),
+        Finds::Hierarchy => Some(l09_acceleration::intersector_for(&scene.objects)),
         _ => None,
     }
 }
@@ -330,21 +510,22 @@ pub fn grid_trees(stage: &str, scene: &Scene) -> Option<Vec<crate::view3d::TreeN
 pub fn trees(stage: &str, scene: &Scene, pixels: &[(u32, u32)]) -> Option<Vec<crate::view3d::TreeNode>> {
     use crate::view3d::{Kind, TreeNode};
     let pixels = pixels.to_vec();
+    let row = self::stage(stage)?;
     #[cfg(feature = "l08")]
-    if matches!(stage, "08" | "10") {
+    if row.draws.traces() {
         return Some(traced(stage, scene, &pixels)?.iter().map(|(_, tree)| tree.into()).collect());
     }
     #[cfg(feature = "l01")]
     {
         let camera = l01_transforms::Camera::from_scene(&scene.camera, scene.width, scene.height).ok()?;
-        let objects = if stage == "01" { None } else { Some(intersector(stage, scene)?) };
+        let objects = if row.finds == Finds::Nothing { None } else { Some(intersector(stage, scene)?) };
         let tree = |(x, y): (u32, u32)| {
             let ray = camera.pixel_ray(x, y, scene.width, scene.height);
             let hit = objects.as_ref().and_then(|o| o.closest_hit(&ray, raylab::Interval::POSITIVE));
             #[allow(unused_mut)]
             let mut children = Vec::new();
             #[cfg(feature = "l07")]
-            if let (Some(hit), "07") = (&hit, stage) {
+            if let (Some(hit), Draws::Mirrored) = (&hit, row.draws) {
                 for (k, direction, through) in sky_rays(scene, &ray, hit) {
                     let kind = if through { Kind::Transmitted } else { Kind::Reflected };
                     children.push(TreeNode::new(
@@ -368,10 +549,10 @@ pub fn trees(stage: &str, scene: &Scene, pixels: &[(u32, u32)]) -> Option<Vec<cr
 /// The colours and ray trees of `pixels` of `scene` at stage 08 or 10.
 #[cfg(feature = "l08")]
 fn traced(stage: &str, scene: &Scene, pixels: &[(u32, u32)]) -> Option<Vec<(Color, l08_ray_tree::RayTree)>> {
-    match stage {
+    match self::stage(stage)?.draws {
         #[cfg(feature = "complete")]
-        "10" => crate::tracer::pixel_trees(scene, pixels, &scene_settings(scene)).ok(),
-        "08" => {
+        Draws::Complete => crate::tracer::pixel_trees(scene, pixels, &scene_settings(scene)).ok(),
+        Draws::Whitted => {
             let camera = l01_transforms::Camera::from_scene(&scene.camera, scene.width, scene.height).ok()?;
             let objects = l04_quadrics_transforms::BruteForce::new(&scene.objects);
             let world = l08_ray_tree::World::new(scene, &objects);
@@ -424,10 +605,21 @@ mod tests {
 
     #[test]
     fn every_lecture_has_a_stage_and_its_needs_come_before_it() {
-        for n in 1..=10 {
-            let lecture = format!("{n:02}");
-            assert!(built(&lecture), "stage {lecture} is not built with every lecture");
-            assert!(needs(&lecture).iter().all(|need| need[..2] < lecture[..]), "stage {lecture}");
+        // The rows in course order, one per lecture with scenes, the complete tracer last.
+        let lectures: Vec<&str> = STAGES.iter().map(|s| s.lecture).collect();
+        assert!(lectures.windows(2).all(|w| w[0] < w[1]), "{lectures:?}");
+        assert_eq!(stage(FINAL_STAGE).map(|s| s.draws), Some(Draws::Complete));
+        for file in crate::images::scene_files(None).unwrap() {
+            assert!(stage(&file.lecture).is_some(), "lecture {} has scenes and no stage", file.lecture);
+        }
+        for row in STAGES {
+            assert!(built(row.lecture), "stage {} is not built with every lecture", row.lecture);
+            assert!(needs(row.lecture).iter().all(|need| need[..2] < *row.lecture), "stage {}", row.lecture);
+            // A stage that finds hits draws with the camera; one that draws the camera's rays alone
+            // finds none.
+            assert_eq!(row.finds == Finds::Nothing, row.draws == Draws::Sky, "stage {}", row.lecture);
+            // Its geometry is graded only with intersections of its own.
+            assert!(!row.geometry_graded || row.geometry == row.finds, "stage {}", row.lecture);
         }
     }
 }

@@ -11,16 +11,17 @@ use raylab::scene::{LightKind, Material, Shape, Specular};
 use raylab::{Hit, Interval, Ray, Scene, Vec3};
 
 use super::{Call, Trail};
-use crate::stages;
+use crate::stages::{self, Draws};
 
 /// The calls of stage `stage` (05, 06, 07, 08 or 10) at `(x, y)`.
 pub fn calls(stage: &str, scene: &Scene, (x, y): (u32, u32)) -> Option<Vec<Call>> {
-    if !matches!(stage, "05" | "06" | "07" | "08" | "10") {
+    let draws = stages::stage(stage)?.draws;
+    if !draws.shades() {
         return None;
     }
     let mut trail = Trail::default();
     #[cfg(feature = "complete")]
-    if stage == "10" {
+    if draws == Draws::Complete {
         sampling(&mut trail, scene, (x, y));
     }
     let camera = l01_transforms::Camera::from_scene(&scene.camera, scene.width, scene.height).ok()?;
@@ -31,7 +32,7 @@ pub fn calls(stage: &str, scene: &Scene, (x, y): (u32, u32)) -> Option<Vec<Call>
     };
     trail.push(eye, "the eye ray's origin and unit direction", &[ray.origin, ray.dir.normalize()][..]);
     // Stage 10 finds hits through lecture 09's choice of hierarchy, the others with 04's brute force.
-    let objects = stages::intersector(if stage == "10" { "09" } else { "04" }, scene)?;
+    let objects = stages::intersector(stage, scene)?;
     let found = objects.closest_hit(&ray, Interval::POSITIVE);
     let Some(hit) = found else {
         trail.push("02/closest_hit", "the eye ray: a miss", &false);
@@ -52,7 +53,7 @@ pub fn calls(stage: &str, scene: &Scene, (x, y): (u32, u32)) -> Option<Vec<Call>
     );
     let material = scene.materials.get(hit.material)?;
     #[cfg(feature = "complete")]
-    let material: Cow<Material> = if stage == "10" {
+    let material: Cow<Material> = if draws == Draws::Complete {
         textures(&mut trail, scene, &hit, material);
         l10_textures_sampling::surface_material(scene, &hit, material)
     } else {
@@ -63,13 +64,14 @@ pub fn calls(stage: &str, scene: &Scene, (x, y): (u32, u32)) -> Option<Vec<Call>
     let v = -ray.dir.normalize();
     for i in 0..scene.lights.len() {
         let at_hit = AtHit { scene, objects: objects.as_ref(), ray: &ray, hit: &hit, material: &material };
-        one_light(&mut trail, stage, &at_hit, i);
+        one_light(&mut trail, draws, &at_hit, i);
     }
-    let local = || shade_local(&material, material.diffuse, &hit, v, &scene.lights, scene.ambient);
-    match stage {
-        "05" | "07" => trail.push("05/shade_local", "the sum: ambient plus every light", &local()),
+    if !draws.shadows() {
+        let local = shade_local(&material, material.diffuse, &hit, v, &scene.lights, scene.ambient);
+        trail.push("05/shade_local", "the sum: ambient plus every light", &local);
+    } else {
         #[cfg(feature = "l06")]
-        _ => {
+        {
             let surface = surface(&material, &hit, &ray);
             let color = l06_shadows::shade_with_shadows(
                 objects.as_ref(),
@@ -81,16 +83,14 @@ pub fn calls(stage: &str, scene: &Scene, (x, y): (u32, u32)) -> Option<Vec<Call>
             );
             trail.push("06/shade_with_shadows", "the sum: ambient plus every light's visible share", &color);
         }
-        #[allow(unreachable_patterns)]
-        _ => {}
     }
     #[cfg(feature = "l07")]
-    if stage >= "07" {
-        directions(&mut trail, stage, scene, &ray, &hit, &material);
+    if draws.mirrors() {
+        directions(&mut trail, draws, scene, &ray, &hit, &material);
     }
     #[cfg(feature = "l08")]
-    if matches!(stage, "08" | "10") {
-        trace(&mut trail, stage, scene, objects.as_ref(), &ray);
+    if draws.traces() {
+        trace(&mut trail, draws, scene, objects.as_ref(), &ray);
     }
     Some(trail.0)
 }
@@ -127,13 +127,13 @@ fn hit_exercise(scene: &Scene, index: usize) -> &'static str {
 /// Light `index`'s calls at the hit: its falloffs, the light seen from the point, the
 /// cosines, its shading, and from stage 06 on its shadow ray (or an area light's samples).
 #[allow(unused_variables)]
-fn one_light(trail: &mut Trail, stage: &str, at_hit: &AtHit, index: usize) {
+fn one_light(trail: &mut Trail, draws: Draws, at_hit: &AtHit, index: usize) {
     let AtHit { scene, objects, ray, hit, material } = *at_hit;
     let light = &scene.lights[index];
     let at = format!("light {index}");
     let (p, n, v) = (hit.point, hit.normal, -ray.dir.normalize());
     #[cfg(feature = "l06")]
-    if stage != "05" && stage != "07" && light.shadows && light.kind.is_area() {
+    if draws.shadows() && light.shadows && light.kind.is_area() {
         area_light(trail, at_hit, index);
         return;
     }
@@ -161,11 +161,7 @@ fn one_light(trail: &mut Trail, stage: &str, at_hit: &AtHit, index: usize) {
     let direct = shade_light(material, material.diffuse, n, v, &sample);
     trail.push("05/shade_light", at.clone(), &direct);
     #[cfg(feature = "l06")]
-    if !matches!(stage, "05" | "07")
-        && light.shadows
-        && n.dot(sample.direction) > 0.0
-        && direct != raylab::BLACK
-    {
+    if draws.shadows() && light.shadows && n.dot(sample.direction) > 0.0 && direct != raylab::BLACK {
         // The offset from the surface in units of ε·(|p|₁ + |o|₁), the same in f32 and f64
         // (the book's rule is 8 along the normal, on the light's side).
         let from = l06_shadows::offset_origin(p, n, sample.direction, ray.origin);
@@ -239,7 +235,7 @@ fn area_light(trail: &mut Trail, at_hit: &AtHit, index: usize) {
 /// The mirror and refracted directions at the hit (stages 07, 08, 10), and the Fresnel
 /// reflectance where the tracer's settings ask for it.
 #[cfg(feature = "l07")]
-fn directions(trail: &mut Trail, stage: &str, scene: &Scene, ray: &Ray, hit: &Hit, material: &Material) {
+fn directions(trail: &mut Trail, draws: Draws, scene: &Scene, ray: &Ray, hit: &Hit, material: &Material) {
     use l07_reflection_refraction::{fresnel_dielectric, interface, mirror_direction, refract};
     let d = ray.dir.normalize();
     if material.reflective != raylab::BLACK {
@@ -256,7 +252,7 @@ fn directions(trail: &mut Trail, stage: &str, scene: &Scene, ray: &Ray, hit: &Hi
             &refract(d, crossing.normal, crossing.eta_ratio()),
         );
         #[cfg(feature = "l08")]
-        if stage != "07" && stages::scene_settings(scene).fresnel {
+        if draws.traces() && stages::scene_settings(scene).fresnel {
             let cos_i = -d.dot(crossing.normal);
             let r = fresnel_dielectric(cos_i, crossing.eta_i, crossing.eta_t);
             trail.push("07/fresnel_dielectric", "the reflected share", &r);
@@ -267,7 +263,7 @@ fn directions(trail: &mut Trail, stage: &str, scene: &Scene, ray: &Ray, hit: &Hi
 /// The colour lecture 08's `trace` gives the pixel's centre ray (stages 08 and 10: at 10 with
 /// the textures and the hierarchy), then the pixel's own value: the last on the path.
 #[cfg(feature = "l08")]
-fn trace(trail: &mut Trail, stage: &str, scene: &Scene, objects: &dyn raylab::Intersector, ray: &Ray) {
+fn trace(trail: &mut Trail, draws: Draws, scene: &Scene, objects: &dyn raylab::Intersector, ray: &Ray) {
     let settings = stages::scene_settings(scene);
     #[allow(unused_mut)]
     let mut world = l08_ray_tree::World::new(scene, objects);
@@ -275,7 +271,7 @@ fn trace(trail: &mut Trail, stage: &str, scene: &Scene, objects: &dyn raylab::In
     let surface: l08_ray_tree::SurfaceMaterial =
         &|hit, material| l10_textures_sampling::surface_material(scene, hit, material);
     #[cfg(feature = "complete")]
-    if stage == "10" {
+    if draws == Draws::Complete {
         world = world.with_surface(surface);
     }
     let color = l08_ray_tree::trace(&world, ray, 0, 1.0, &settings);

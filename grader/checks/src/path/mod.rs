@@ -165,11 +165,12 @@ pub fn calls(stage: &str, scene: &raylab::Scene, pixel: (u32, u32)) -> Option<Ve
 /// call agrees is that exercise's.
 #[allow(unused_variables)]
 pub fn pixel_loop(stage: &str, scene: &raylab::Scene) -> Option<&'static str> {
-    match stage {
-        "08" => Some("08/render"),
+    use crate::stages::Draws;
+    match crate::stages::stage(stage)?.draws {
+        Draws::Whitted => Some("08/render"),
         #[cfg(feature = "complete")]
-        "10" if crate::tracer::scene_sampling(scene).spp > 1 => Some("10/render_supersampled"),
-        "10" => Some("08/render"),
+        Draws::Complete if crate::tracer::scene_sampling(scene).spp > 1 => Some("10/render_supersampled"),
+        Draws::Complete => Some("08/render"),
         _ => None,
     }
 }

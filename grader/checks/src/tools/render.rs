@@ -83,10 +83,12 @@ pub struct RenderArgs {
     stage: Option<String>,
 }
 
-/// A stage, `01` to the final one's.
+/// A stage, the first's to the final one's.
 fn parse_stage(s: &str) -> Result<String, String> {
-    let ok = s.len() == 2 && s.chars().all(|c| c.is_ascii_digit()) && ("01"..=FINAL_STAGE).contains(&s);
-    if ok { Ok(s.to_owned()) } else { Err(format!("expected a stage from 01 to {FINAL_STAGE}, found {s:?}")) }
+    match crate::stages::stage(s) {
+        Some(stage) => Ok(stage.lecture.to_owned()),
+        None => Err(format!("expected a stage from {FIRST_STAGE} to {FINAL_STAGE}, found {s:?}")),
+    }
 }
 
 /// The stage a scene is drawn by when none is asked for: its lecture's, for a scene of
@@ -106,7 +108,7 @@ fn own_stage(scene: &std::path::Path) -> String {
     lecture.unwrap_or_else(|| FINAL_STAGE.to_owned())
 }
 
-use crate::stages::FINAL_STAGE;
+use crate::stages::{FINAL_STAGE, FIRST_STAGE};
 
 /// The most rays a render may cast without `--allow-large`: 2·10⁹, minutes of
 /// work on a laptop's cores (the lecture scenes cast under 10⁷, the 6.837
@@ -436,7 +438,7 @@ fn until_todo(stage: &str, render: impl FnOnce() -> Result<(), String>) -> Resul
     match todo.filter(|id| id.len() > 3 && id.as_bytes()[2] == b'/') {
         Some(id) => {
             let (lecture, function) = id.split_at(2);
-            let earlier = if lecture > "01" && lecture <= stage {
+            let earlier = if lecture > FIRST_STAGE && lecture <= stage {
                 format!(
                     ", or draw it with the stage of a lecture before {lecture} that you have done (--stage NN)"
                 )
