@@ -73,13 +73,14 @@ fn html(ws: &Workspace, grade: &Grade, out: &Path) -> String {
     }
     // The 3D views' drawing code, once, where a failed scene has a view.
     let view3d = if body.contains("class=\"view3d-box\"") {
-        format!("<script>{VIEW3D}</script>\n")
+        format!("<script>{}</script>\n", raylab_protocol::VIEW3D_SCRIPT)
     } else {
         String::new()
     };
+    let view3d_style = raylab_protocol::VIEW3D_STYLE;
     format!(
         "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>raylab grade {got}/{max}</title>\n\
-         <style>{STYLE}</style>\n</head>\n<body>\n{body}<div id=\"picked\" hidden></div>\n{view3d}<script>{SCRIPT}</script>\n</body>\n</html>\n"
+         <style>{STYLE}{view3d_style}</style>\n</head>\n<body>\n{body}<div id=\"picked\" hidden></div>\n{view3d}<script>{SCRIPT}</script>\n</body>\n</html>\n"
     )
 }
 
@@ -188,82 +189,9 @@ fn escape(text: &str) -> String {
     text.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;").replace('"', "&quot;")
 }
 
-const STYLE: &str = "
-body { font-family: system-ui, sans-serif; margin: 2em; color: #222; }
-pre.next { background: #eef5ff; border-left: 4px solid #36c; padding: 0.6em 1em; white-space: pre-wrap; }
-h2 .pts { font-weight: normal; color: #666; }
-table { border-collapse: collapse; width: 100%; margin-bottom: 2em; }
-td, th { border-bottom: 1px solid #ddd; padding: 0.3em 0.6em; text-align: left; vertical-align: top; }
-tr.passed td:nth-child(2) { color: #1a7f37; }
-tr.failed td:nth-child(2) { color: #cf222e; font-weight: bold; }
-tr.todo td:nth-child(2) { color: #9a6700; }
-.about { color: #777; font-size: 0.85em; }
-figure { display: inline-block; margin: 0.3em; }
-figure img { image-rendering: pixelated; width: 240px; cursor: crosshair; border: 1px solid #ccc; }
-figcaption { font-size: 0.85em; color: #555; }
-pre { background: #f6f8fa; padding: 0.6em; overflow-x: auto; }
-.compile { border-left: 4px solid #cf222e; padding-left: 1em; }
-details.view3d-box { margin-top: 0.6em; }
-details.view3d-box summary { cursor: pointer; font-weight: bold; }
-.view3d canvas { background: #202428; border-radius: 4px; max-width: 100%; cursor: grab; }
-.view3d-controls label { margin-right: 1.2em; }
-.view3d-legend { background: #202428; color: #ddd; padding: 0.3em 0.6em; max-width: 708px; border-radius: 4px; }
-.view3d-legend span { margin-right: 1.2em; }
-.view3d-legend span[data-kind] { white-space: nowrap; }
-.view3d-texts { display: flex; gap: 1em; flex-wrap: wrap; }
-.view3d-texts pre { font-size: 12px; flex: 1 1 30em; }
-#picked { position: fixed; bottom: 1em; right: 1em; background: #fff; border: 1px solid #888; padding: 0.6em; }
-";
+/// The report's styles (the 3D view's are the protocol's, `VIEW3D_STYLE`).
+const STYLE: &str = include_str!("../assets/report.css");
 
-/// The 3D view's drawing code (the checks' `grader render --view` pages use the same).
-const VIEW3D: &str = include_str!("../checks/assets/view3d.js");
-
-const SCRIPT: &str = "
-// A failed scene's 3D view: its data is a script beside its images, loaded when the box opens.
-function openView(box, then) {
-  if (box.view) { if (then) then(box.view); return; }
-  if (box.dataset.loading) return;
-  box.dataset.loading = '1';
-  const script = document.createElement('script');
-  script.src = box.dataset.src;
-  script.onload = () => {
-    const data = window.raylabViewData && window.raylabViewData[box.dataset.view];
-    if (!data) return;
-    box.view = raylabView3d(box.querySelector('.view3d-root'), data);
-    const first = data.trees.length > 0 ? data.trees[0].pixel : null;
-    if (first) box.querySelector('.picked3d').textContent = 'Pixel (' + first.join(', ') +
-      '): of the pixels the report holds trees for, the one that differs nearest the first that differs. ' +
-      'Click the expected or your image to pick another.';
-    if (then) then(box.view);
-  };
-  document.head.append(script);
-}
-for (const box of document.querySelectorAll('details[data-view]')) {
-  box.addEventListener('toggle', () => { if (box.open) openView(box); });
-}
-const firstBox = document.querySelector('details[data-view]');
-if (firstBox) firstBox.open = true;
-for (const img of document.querySelectorAll('td[data-scene] img')) {
-  img.addEventListener('click', (event) => {
-    const rect = img.getBoundingClientRect();
-    const x = Math.floor((event.clientX - rect.left) / rect.width * img.naturalWidth);
-    const y = Math.floor((event.clientY - rect.top) / rect.height * img.naturalHeight);
-    const cell = img.closest('td');
-    const scene = cell.dataset.scene;
-    const box = document.getElementById('picked');
-    box.hidden = false;
-    box.textContent = 'pixel (' + x + ', ' + y + '): cargo run -p grader -- render ' + scene + ' --tree ' + x + ',' + y +
-      ' (add --view tree.html for its page in 3D)';
-    const view = cell.querySelector('details[data-view]');
-    if (view) {
-      view.open = true;
-      openView(view, (v) => {
-        const at = v.pick(x, y);
-        if (at) view.querySelector('.picked3d').textContent = 'Pixel (' + at.join(', ') +
-          '), the grid pixel nearest your click (' + x + ', ' + y + '): the report holds the trees of one pixel in every ' +
-          v.step + ' × ' + v.step + ' block.';
-      });
-    }
-  });
-}
-";
+/// The report's script: a failed scene's 3D view loaded when its box opens, a click on a picture
+/// picking a pixel.
+const SCRIPT: &str = include_str!("../assets/report.js");

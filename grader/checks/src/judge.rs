@@ -47,7 +47,7 @@ enum Frame {
     /// written itself.
     Panic { message: String, file: String, line: u32 },
     /// A call of the student's code for the subject to make (judge → subject, a hidden
-    /// check's: [`crate::remote`]), postcard-encoded.
+    /// check's: the `remote` module's), postcard-encoded.
     Call { bytes: Vec<u8> },
 }
 
@@ -227,17 +227,17 @@ fn receive<T: DeserializeOwned>(channel: &Channel, site: &str) -> T {
 /// Where the values of [`call`]s come from, as the frames name it.
 const CALL_SITE: &str = "a call of the judge's";
 
-/// `call` of the student's code (a hidden check's, [`crate::remote`]): made in place locally;
-/// in the judge, sent to the subject, which makes it and returns the value.
-pub fn call<T: DeserializeOwned>(call: crate::remote::Call) -> T {
+/// A call of the student's code, `call` encoded (a hidden check's, the `remote` module's): made in
+/// place locally, by `here`, which returns its value encoded; in the judge, sent to the subject,
+/// which makes it and returns the value.
+pub fn call<T: DeserializeOwned>(call: Vec<u8>, here: impl FnOnce() -> Result<Vec<u8>, String>) -> T {
     match mode() {
         Mode::Direct => {
-            let bytes = crate::remote::answer(call).unwrap_or_else(|e| panic!("{e}"));
+            let bytes = here().unwrap_or_else(|e| panic!("{e}"));
             postcard::from_bytes(&bytes).unwrap_or_else(|e| panic!("a call's value: {e}"))
         }
         Mode::Judge(channel) => {
-            let bytes = postcard::to_stdvec(&call).expect("a call encodes");
-            write_frame(channel, &Frame::Call { bytes }, true);
+            write_frame(channel, &Frame::Call { bytes: call }, true);
             receive(channel, CALL_SITE)
         }
         // The subject's build has no hidden checks: nothing in it makes a call.
@@ -246,9 +246,10 @@ pub fn call<T: DeserializeOwned>(call: crate::remote::Call) -> T {
 }
 
 /// The subject of a hidden check (`raylab-checks serve`): makes each call the judge sends and
-/// returns its value, until the judge ends (with its verdict). A panic of the student's code goes
-/// to the judge through the panic hook, as in a check.
-pub fn serve_calls() -> Result<(), String> {
+/// returns its value, until the judge ends (with its verdict): `answer` makes an encoded call
+/// and encodes its value. A panic of the student's code goes to the judge through the panic
+/// hook, as in a check.
+pub fn serve_calls(answer: impl Fn(&[u8]) -> Result<Vec<u8>, String>) -> Result<(), String> {
     let Mode::Subject(channel) = mode() else { return Err("serve needs --channel".into()) };
     loop {
         let frame = match read_frame(channel) {
@@ -260,8 +261,7 @@ pub fn serve_calls() -> Result<(), String> {
         let Frame::Call { bytes } = frame else {
             return Err("the judge sent a frame other than a call".into());
         };
-        let call: crate::remote::Call = postcard::from_bytes(&bytes).map_err(|e| format!("a call: {e}"))?;
-        match crate::remote::answer(call) {
+        match answer(&bytes) {
             Ok(bytes) => write_frame(channel, &Frame::Value { site: CALL_SITE.to_owned(), bytes }, true),
             Err(message) => report_panic(&message, file!(), line!()),
         }

@@ -26,11 +26,14 @@ mod platform;
 mod remote;
 #[cfg(feature = "l03")]
 mod scene_objects;
+mod scenes;
+mod settings;
 mod stages;
 #[cfg(feature = "complete")]
 mod tools;
 #[cfg(feature = "complete")]
 mod tracer;
+mod trees;
 mod view3d;
 
 use std::path::{Path, PathBuf};
@@ -107,9 +110,7 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
         Command::List => {
-            let mut infos = lectures::infos();
-            infos.extend(images::infos());
-            serde_json::to_string_pretty(&infos).map(|json| println!("{json}")).map_err(|e| e.to_string())
+            serde_json::to_string_pretty(&listed()).map(|json| println!("{json}")).map_err(|e| e.to_string())
         }
         Command::Run { id, verdict, out, channel } => match (channel, verdict) {
             // Connected before any student code runs: the judge takes the first connection.
@@ -126,7 +127,7 @@ fn main() -> ExitCode {
             subject_limits();
             token().and_then(|token| judge::connect(&channel, token)).and_then(|()| {
                 install_panic_hook(Box::leak(Box::new(VerdictTo::Judge)));
-                judge::serve_calls()
+                judge::serve_calls(remote::answer_encoded)
             })
         }
         Command::Judge { id, out } => {
@@ -247,4 +248,45 @@ fn install_panic_hook(verdict: &'static VerdictTo) {
         }
         default_hook(info);
     }));
+}
+
+/// Every declared check, as `list` prints them: the lectures' unit and extreme checks, then the
+/// scenes' geometry, image and final checks.
+fn listed() -> Vec<check::Info> {
+    let mut infos = lectures::infos();
+    infos.extend(images::infos());
+    infos
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::collections::HashSet;
+
+    #[test]
+    fn ids_are_unique_and_every_need_names_an_exercise_of_an_earlier_or_same_lecture_images_included() {
+        let infos = listed();
+        let mut seen = HashSet::new();
+        for info in &infos {
+            assert!(seen.insert(info.id.clone()), "{} is declared twice", info.id);
+        }
+        let exercises: HashSet<String> =
+            infos.iter().map(|i| format!("{}/{}", i.lecture, i.exercise)).collect();
+        for info in &infos {
+            for need in &info.needs {
+                assert!(exercises.contains(need), "{} needs {need}, which no check tests", info.id);
+                assert!(need[..2] <= info.lecture[..], "{} needs the later {need}", info.id);
+            }
+        }
+    }
+
+    /// Graded as a submission, every check runs apart from the student's code (`judge.rs`):
+    /// one that was not would let a submission write its own verdict.
+    #[test]
+    fn every_check_is_judged_hidden_ones_included() {
+        let infos = listed();
+        let unjudged: Vec<&str> = infos.iter().filter(|i| !i.judged).map(|i| i.id.as_str()).collect();
+        assert!(unjudged.is_empty(), "not judged: {unjudged:?}");
+        assert!(infos.iter().any(|i| i.hidden) || !cfg!(feature = "hidden"), "no hidden check listed");
+    }
 }

@@ -12,7 +12,8 @@ use serde::{Deserialize, Serialize};
 use raylab::{Float, Hit, Interval, Mat4, Ray, Vec3};
 
 /// Declares the calls: each a variant of [`Call`], an arm of [`answer`] (behind its lecture's
-/// feature) and a function of the same name that makes the call through [`crate::judge::call`].
+/// feature) and a function of the same name that makes the call through [`crate::judge::call`]
+/// (the judge knows calls only as bytes: [`answer_encoded`] makes one).
 macro_rules! remote_calls {
     ($($feature:literal fn $name:ident($($arg:ident: $ty:ty),*) -> $ret:ty = $body:expr;)+) => {
         /// A call of the student's code that the judge asks of the subject.
@@ -44,7 +45,9 @@ macro_rules! remote_calls {
             #[doc = concat!("`", stringify!($name), "` of the student's code, made where the student's code runs.")]
             #[allow(dead_code, reason = "called by the hidden checks, which only instructors' builds have")]
             pub fn $name($($arg: $ty),*) -> $ret {
-                crate::judge::call(Call::$name { $($arg),* })
+                let call = Call::$name { $($arg),* };
+                let bytes = postcard::to_stdvec(&call).expect("a call encodes");
+                crate::judge::call(bytes, move || answer(call))
             }
         )+
     };
@@ -62,4 +65,10 @@ remote_calls! {
         l07_reflection_refraction::refract(i, n, eta_ratio);
     "l09" fn aabb_surface_area(min: Vec3, max: Vec3) -> Float =
         l09_acceleration::Aabb::new(min, max).surface_area();
+}
+
+/// Makes the call `bytes` encode (the judge's frame) with the student's code: its value, encoded.
+pub fn answer_encoded(bytes: &[u8]) -> Result<Vec<u8>, String> {
+    let call: Call = postcard::from_bytes(bytes).map_err(|e| format!("a call: {e}"))?;
+    answer(call)
 }

@@ -23,6 +23,9 @@
 
 use raylab::{Color, Image, Ray, Scene, Vec3};
 
+#[allow(unused_imports, reason = "used by the stages that shade, where their lectures are built")]
+use crate::settings;
+
 /// One lecture's stage: what its pictures are drawn with and how they are explained. The
 /// declaration of the stages is [`STAGES`], one row per lecture; everything else asks it.
 #[derive(Clone, Copy, Debug)]
@@ -68,7 +71,7 @@ pub enum Draws {
 
 impl Draws {
     /// Whether the picture is shaded by the lectures' shading (05 on): the stages whose
-    /// pictures have calls on their path (`crate::path`).
+    /// pictures have calls on their path (the `path` module).
     pub fn shades(self) -> bool {
         !matches!(self, Draws::Sky | Draws::Headlight)
     }
@@ -259,6 +262,12 @@ pub fn needs(lecture: &str) -> &'static [&'static str] {
     &DRAWN_WITH[..count]
 }
 
+/// The stages `file` is drawn by: its lecture's, and the complete tracer's for the scenes of the
+/// lectures before it (`10/final/NN-S`).
+pub fn drawing(file: &crate::scenes::SceneFile) -> Vec<&str> {
+    if file.lecture == FINAL_STAGE { vec![FINAL_STAGE] } else { vec![file.lecture.as_str(), FINAL_STAGE] }
+}
+
 /// Whether stage `lecture`'s code is in this build (its lecture and the ones it draws with
 /// compiled: the lecture's feature turns those on; the final stage's is every lecture).
 pub fn built(lecture: &str) -> bool {
@@ -342,12 +351,13 @@ pub fn render(lecture: &str, scene: &Scene) -> Result<Image, String> {
             (Draws::Mirrored, Some(objects)) => return drawn(objects, &|ray, hit| mirrored(scene, ray, hit)),
             #[cfg(feature = "l08")]
             (Draws::Whitted, _) => {
-                return l08_ray_tree::render_scene(scene, &scene_settings(scene)).map(|(image, _)| image);
+                return l08_ray_tree::render_scene(scene, &settings::scene_settings(scene))
+                    .map(|(image, _)| image);
             }
             #[cfg(feature = "complete")]
             (Draws::Complete, _) => {
                 use crate::tracer::{render_scene, scene_sampling};
-                return render_scene(scene, None, &scene_settings(scene), scene_sampling(scene))
+                return render_scene(scene, None, &settings::scene_settings(scene), scene_sampling(scene))
                     .map(|(image, _)| image);
             }
             _ => {}
@@ -392,29 +402,12 @@ fn local(scene: &Scene, ray: &Ray, hit: &raylab::Hit) -> Color {
     )
 }
 
-/// The shadow settings `scene` asks for: its `[render]` table's
-/// `transparent_shadows` and `area_samples`, lecture 06's defaults for what it
-/// does not say. Stage 06 shades with them; the tracer's settings take them.
-#[cfg(feature = "l06")]
-pub fn shadow_settings(scene: &Scene) -> l06_shadows::ShadowSettings {
-    use l06_shadows::{ShadowMode, ShadowSettings};
-    let defaults = ShadowSettings::default();
-    ShadowSettings {
-        mode: match scene.render.transparent_shadows {
-            Some(true) => ShadowMode::Transmissive,
-            Some(false) => ShadowMode::Opaque,
-            None => defaults.mode,
-        },
-        area_samples: scene.render.area_samples.unwrap_or(defaults.area_samples),
-    }
-}
-
 /// Stage 06: 06's `shade_with_shadows` with the scene's shadow settings.
 #[cfg(feature = "l06")]
 fn shadowed(scene: &Scene, objects: &dyn raylab::Intersector, ray: &Ray, hit: &raylab::Hit) -> Color {
     use l06_shadows::Surface;
     let Some(material) = scene.materials.get(hit.material) else { return scene.background };
-    let settings = shadow_settings(scene);
+    let settings = settings::shadow_settings(scene);
     let surface = Surface {
         material,
         diffuse: material.diffuse,
@@ -467,22 +460,6 @@ fn sky_rays(scene: &Scene, ray: &Ray, hit: &raylab::Hit) -> Vec<(Color, Vec3, bo
     rays
 }
 
-/// The tracer's settings for `scene`: what its `[render]` table says, and
-/// [`l08_ray_tree::TraceSettings::default`] for what it does not (6.837 files
-/// say nothing); the shadow settings are [`shadow_settings`]'s.
-#[cfg(feature = "l08")]
-pub fn scene_settings(scene: &Scene) -> l08_ray_tree::TraceSettings {
-    let (own, default) = (scene.render, l08_ray_tree::TraceSettings::default());
-    let shadows = shadow_settings(scene);
-    l08_ray_tree::TraceSettings {
-        max_depth: own.max_depth.unwrap_or(default.max_depth),
-        min_weight: own.min_weight.unwrap_or(default.min_weight),
-        shadow_mode: shadows.mode,
-        area_samples: shadows.area_samples,
-        ..default
-    }
-}
-
 /// The ray tree of pixel (x, y) of `scene` at a stage that traces one (08 and
 /// 10), as text with the pixel's colour; `None` at the other stages.
 #[allow(unused_variables)]
@@ -496,19 +473,19 @@ pub fn pixel_tree(stage: &str, scene: &Scene, (x, y): (u32, u32)) -> Option<Stri
     None
 }
 
-/// The ray trees of the report's grid of pixels ([`crate::view3d::grid`]) for its 3D view: at
+/// The ray trees of the report's grid of pixels ([`crate::trees::grid`]) for its 3D view: at
 /// stages 08 and 10 the traced trees (lecture 08's), before them the rays the stage draws with —
 /// the camera's ray (01), its closest hit (02–07, 09; stages 05 and 06 shade inside 05's and 06's
 /// functions, which record nothing), and at 07 the mirror and refracted rays to the sky. `None`
 /// where the stage is not built.
-pub fn grid_trees(stage: &str, scene: &Scene) -> Option<Vec<crate::view3d::TreeNode>> {
-    trees(stage, scene, &crate::view3d::grid(scene.width, scene.height))
+pub fn grid_trees(stage: &str, scene: &Scene) -> Option<Vec<crate::trees::TreeNode>> {
+    trees(stage, scene, &crate::trees::grid(scene.width, scene.height))
 }
 
 /// The ray trees of `pixels` at stage `stage`, as [`grid_trees`] makes them.
 #[allow(unused_variables)]
-pub fn trees(stage: &str, scene: &Scene, pixels: &[(u32, u32)]) -> Option<Vec<crate::view3d::TreeNode>> {
-    use crate::view3d::{Kind, TreeNode};
+pub fn trees(stage: &str, scene: &Scene, pixels: &[(u32, u32)]) -> Option<Vec<crate::trees::TreeNode>> {
+    use crate::trees::{Kind, TreeNode};
     let pixels = pixels.to_vec();
     let row = self::stage(stage)?;
     #[cfg(feature = "l08")]
@@ -551,12 +528,12 @@ pub fn trees(stage: &str, scene: &Scene, pixels: &[(u32, u32)]) -> Option<Vec<cr
 fn traced(stage: &str, scene: &Scene, pixels: &[(u32, u32)]) -> Option<Vec<(Color, l08_ray_tree::RayTree)>> {
     match self::stage(stage)?.draws {
         #[cfg(feature = "complete")]
-        Draws::Complete => crate::tracer::pixel_trees(scene, pixels, &scene_settings(scene)).ok(),
+        Draws::Complete => crate::tracer::pixel_trees(scene, pixels, &settings::scene_settings(scene)).ok(),
         Draws::Whitted => {
             let camera = l01_transforms::Camera::from_scene(&scene.camera, scene.width, scene.height).ok()?;
             let objects = l04_quadrics_transforms::BruteForce::new(&scene.objects);
             let world = l08_ray_tree::World::new(scene, &objects);
-            let settings = scene_settings(scene);
+            let settings = settings::scene_settings(scene);
             let trace = |(x, y): (u32, u32)| {
                 l08_ray_tree::trace_recorded(
                     &world,
@@ -609,7 +586,7 @@ mod tests {
         let lectures: Vec<&str> = STAGES.iter().map(|s| s.lecture).collect();
         assert!(lectures.windows(2).all(|w| w[0] < w[1]), "{lectures:?}");
         assert_eq!(stage(FINAL_STAGE).map(|s| s.draws), Some(Draws::Complete));
-        for file in crate::images::scene_files(None).unwrap() {
+        for file in crate::scenes::scene_files(None).unwrap() {
             assert!(stage(&file.lecture).is_some(), "lecture {} has scenes and no stage", file.lecture);
         }
         for row in STAGES {

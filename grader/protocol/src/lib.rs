@@ -5,6 +5,13 @@
 
 use serde::{Deserialize, Serialize};
 
+/// The 3D view of ray trees over a scene, a small hand-written WebGL module: the checks' pages
+/// (`grader render SCENE --tree X,Y --view FILE`) and the grader's report draw with it.
+pub const VIEW3D_SCRIPT: &str = include_str!("../assets/view3d.js");
+
+/// The 3D view's styles, for the same pages.
+pub const VIEW3D_STYLE: &str = include_str!("../assets/view3d.css");
+
 /// The first line a judge prints: this, then the loopback address the
 /// subject is to connect to (`raylab-checks run ID --channel ADDR`).
 /// Both read their token from standard input first ([`token_line`]).

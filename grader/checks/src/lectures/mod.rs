@@ -127,38 +127,3 @@ pub fn run(id: &str) -> Option<CheckResult> {
         if declared { (l.run?)(rest) } else { None }
     })
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use std::collections::HashSet;
-
-    #[test]
-    fn ids_are_unique_and_every_need_names_an_exercise_of_an_earlier_or_same_lecture_images_included() {
-        let mut infos = infos();
-        infos.extend(crate::images::infos());
-        let mut seen = HashSet::new();
-        for info in &infos {
-            assert!(seen.insert(info.id.clone()), "{} is declared twice", info.id);
-        }
-        let exercises: HashSet<String> =
-            infos.iter().map(|i| format!("{}/{}", i.lecture, i.exercise)).collect();
-        for info in &infos {
-            for need in &info.needs {
-                assert!(exercises.contains(need), "{} needs {need}, which no check tests", info.id);
-                assert!(need[..2] <= info.lecture[..], "{} needs the later {need}", info.id);
-            }
-        }
-    }
-
-    /// Graded as a submission, every check runs apart from the student's code (`judge.rs`):
-    /// one that was not would let a submission write its own verdict.
-    #[test]
-    fn every_check_is_judged_hidden_ones_included() {
-        let mut infos = infos();
-        infos.extend(crate::images::infos());
-        let unjudged: Vec<&str> = infos.iter().filter(|i| !i.judged).map(|i| i.id.as_str()).collect();
-        assert!(unjudged.is_empty(), "not judged: {unjudged:?}");
-        assert!(infos.iter().any(|i| i.hidden) || !cfg!(feature = "hidden"), "no hidden check listed");
-    }
-}

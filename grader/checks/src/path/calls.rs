@@ -79,7 +79,7 @@ pub fn calls(stage: &str, scene: &Scene, (x, y): (u32, u32)) -> Option<Vec<Call>
                 &surface,
                 &scene.lights,
                 scene.ambient,
-                stages::shadow_settings(scene),
+                crate::settings::shadow_settings(scene),
             );
             trail.push("06/shade_with_shadows", "the sum: ambient plus every light's visible share", &color);
         }
@@ -173,7 +173,7 @@ fn one_light(trail: &mut Trail, draws: Draws, at_hit: &AtHit, index: usize) {
             &offset,
         );
         let surface = surface(material, hit, ray);
-        let mode = stages::shadow_settings(scene).mode;
+        let mode = crate::settings::shadow_settings(scene).mode;
         let seen = l06_shadows::visibility(objects, &scene.materials, &surface, &sample, mode);
         trail.push("06/visibility", format!("{at}: what its shadow ray lets through"), &seen);
     }
@@ -212,7 +212,7 @@ fn area_light(trail: &mut Trail, at_hit: &AtHit, index: usize) {
     let AtHit { scene, objects, ray, hit, material } = *at_hit;
     use l06_shadows::{point_seed, shade_area_light, stratified};
     let (light, at) = (&scene.lights[index], format!("light {index}"));
-    let settings = stages::shadow_settings(scene);
+    let settings = crate::settings::shadow_settings(scene);
     let samples =
         stratified(settings.area_samples.max(1), &mut raylab::random::Rng::new(point_seed(hit.point)));
     let shown = &samples[..samples.len().min(super::SAMPLES_SHOWN)];
@@ -252,7 +252,7 @@ fn directions(trail: &mut Trail, draws: Draws, scene: &Scene, ray: &Ray, hit: &H
             &refract(d, crossing.normal, crossing.eta_ratio()),
         );
         #[cfg(feature = "l08")]
-        if draws.traces() && stages::scene_settings(scene).fresnel {
+        if draws.traces() && crate::settings::scene_settings(scene).fresnel {
             let cos_i = -d.dot(crossing.normal);
             let r = fresnel_dielectric(cos_i, crossing.eta_i, crossing.eta_t);
             trail.push("07/fresnel_dielectric", "the reflected share", &r);
@@ -264,7 +264,7 @@ fn directions(trail: &mut Trail, draws: Draws, scene: &Scene, ray: &Ray, hit: &H
 /// the textures and the hierarchy), then the pixel's own value: the last on the path.
 #[cfg(feature = "l08")]
 fn trace(trail: &mut Trail, draws: Draws, scene: &Scene, objects: &dyn raylab::Intersector, ray: &Ray) {
-    let settings = stages::scene_settings(scene);
+    let settings = crate::settings::scene_settings(scene);
     #[allow(unused_mut)]
     let mut world = l08_ray_tree::World::new(scene, objects);
     #[cfg(feature = "complete")]

@@ -24,7 +24,7 @@ fn numbers<'de, D: serde::Deserializer<'de>>(d: D) -> Result<Vec<f64>, D::Error>
     Ok(Vec::<Option<f64>>::deserialize(d)?.into_iter().map(|x| x.unwrap_or(f64::NAN)).collect())
 }
 
-/// The calls at the report's grid of pixels ([`crate::view3d::grid`], row by row), as blessed:
+/// The calls at the report's grid of pixels ([`crate::trees::grid`], row by row), as blessed:
 /// each distinct (exercise, where) once in `labels`, each call as its label's index and values.
 #[derive(Debug, Serialize, Deserialize)]
 pub struct GridCalls {
@@ -56,7 +56,7 @@ impl GridCalls {
             }
             calls.push(indexed);
         }
-        Self { grid: crate::view3d::GRID, width, height, labels, calls }
+        Self { grid: crate::trees::GRID, width, height, labels, calls }
     }
 
     /// The calls of the `index`th grid pixel; `None` past the grid or where a label is missing.
@@ -326,13 +326,14 @@ mod tests {
     #[cfg(feature = "complete")]
     #[test]
     fn the_reference_s_calls_agree_with_the_blessed_ones_at_every_grid_pixel() {
-        use crate::images::{calls_snapshot, scene_files, stages_of};
+        use crate::scenes::{calls_snapshot, scene_files};
+        use crate::stages;
         let (mut files, mut pixels) = (0, 0);
         let (mut wrong, mut reseeded) = (Vec::new(), Vec::new());
         let f64_build = size_of::<raylab::Float>() == 8;
         for file in scene_files(None).unwrap() {
             let scene = raylab::scene::load(&file.scene).unwrap();
-            for stage in stages_of(&file) {
+            for stage in stages::drawing(&file) {
                 let path = calls_snapshot(&file, stage);
                 let has_calls = matches!(stage, "05" | "06" | "07" | "08" | "10");
                 let Ok(text) = std::fs::read_to_string(&path) else {
@@ -343,9 +344,9 @@ mod tests {
                 let blessed: GridCalls = serde_json::from_str(&text).unwrap();
                 assert_eq!(
                     (blessed.grid, blessed.width, blessed.height),
-                    (crate::view3d::GRID, scene.width, scene.height)
+                    (crate::trees::GRID, scene.width, scene.height)
                 );
-                let grid = crate::view3d::grid(scene.width, scene.height);
+                let grid = crate::trees::grid(scene.width, scene.height);
                 assert_eq!(blessed.calls.len(), grid.len(), "{}", path.display());
                 for (index, &pixel) in grid.iter().enumerate() {
                     let traced = calls(stage, &scene, pixel).unwrap();

@@ -236,7 +236,7 @@ fn judge(message: &str, scene: &Path) -> Result<Outcome, String> {
 
 /// The seeds: every lecture scene, the 6.837 scene above.
 fn seeds() -> Vec<(String, String)> {
-    let mut seeds: Vec<(String, String)> = crate::images::scene_files(None)
+    let mut seeds: Vec<(String, String)> = crate::scenes::scene_files(None)
         .expect("the lecture scenes are listed")
         .into_iter()
         .map(|f| {

@@ -560,8 +560,8 @@ mod tests {
         assert!(said.starts_with("a 16384×16384 image takes"), "{said}");
         // Every lecture scene, and every 6.837 scene that loads, is within budget at its own size.
         let mut paths: Vec<_> =
-            crate::images::scene_files(None).unwrap().into_iter().map(|f| f.scene).collect();
-        let mit = crate::images::workspace_root().join("../shared/data/mit6837");
+            crate::scenes::scene_files(None).unwrap().into_iter().map(|f| f.scene).collect();
+        let mit = crate::scenes::workspace_root().join("../shared/data/mit6837");
         match std::fs::read_dir(&mit) {
             Ok(entries) => paths.extend(entries.filter_map(|e| e.ok().map(|e| e.path()))),
             Err(_) => println!("SKIPPED the 6.837 scenes' budget: {} is absent", mit.display()),

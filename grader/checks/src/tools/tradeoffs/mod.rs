@@ -137,7 +137,7 @@ pub fn mode(is_child: bool, json: bool) -> Result<Mode, String> {
 
 /// `<workspace>/target/grader/tradeoffs`.
 pub fn default_out_dir() -> PathBuf {
-    let root = crate::images::workspace_root();
+    let root = crate::scenes::workspace_root();
     std::fs::canonicalize(&root).unwrap_or(root).join("target/grader/tradeoffs")
 }
 
@@ -197,7 +197,7 @@ fn run_other_precision(args: &TradeoffsArgs) -> Result<Report, String> {
     eprintln!("running the other precision: {program} {}", argv.join(" "));
     let output = Command::new(&program)
         .args(&argv)
-        .current_dir(crate::images::workspace_root())
+        .current_dir(crate::scenes::workspace_root())
         .env(CHILD_ENV, "1")
         .stdin(Stdio::null())
         .stderr(Stdio::inherit())

@@ -37,7 +37,7 @@ pub const FLIP: &str = "mean FLIP";
 
 /// A lecture scene (path relative to the workspace), at 1/`divisor` of its size.
 pub fn load_scene(relative: &str, divisor: u32) -> Result<Scene, String> {
-    let path = crate::images::workspace_root().join(relative);
+    let path = crate::scenes::workspace_root().join(relative);
     let mut scene = raylab::scene::load(&path).map_err(|e| e.to_string())?;
     scene.width = (scene.width / divisor.max(1)).max(1);
     scene.height = (scene.height / divisor.max(1)).max(1);
