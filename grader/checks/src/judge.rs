@@ -348,22 +348,37 @@ pub fn serve(token: u64) -> Result<(), String> {
 
 /// Functions of a lecture crate, each wrapped so that its value goes through
 /// [`student`]: a lecture's checks import these instead of the crate's own,
-/// and their code reads as before.
+/// and their code reads as before. A row's `as NameFn` also names the function's
+/// type, for the checks that take the function under test as an argument (the
+/// lecture's, or a planted mistake in the checks' tests): the signature is
+/// written once outside the lecture, here.
 ///
 /// ```ignore
 /// student_fns! { l02_ray_casting:
-///     fn hit_plane(ray: &Ray, normal: Vec3, offset: Float, range: Interval) -> Option<Hit>;
+///     fn hit_plane(ray: &Ray, normal: Vec3, offset: Float, range: Interval) -> Option<Hit> as PlaneFn;
 /// }
 /// ```
 macro_rules! student_fns {
-    ($krate:ident: $(fn $name:ident($($arg:ident: $ty:ty),* $(,)?) -> $ret:ty;)+) => {
+    ($krate:ident: $(fn $name:ident($($arg:ident: $ty:ty),* $(,)?) -> $ret:ty $(as $alias:ident)?;)+) => {
         $(
             #[doc = concat!("`", stringify!($krate), "::", stringify!($name), "`, its value taken through `judge::student`.")]
             #[track_caller]
             pub(super) fn $name($($arg: $ty),*) -> $ret {
                 crate::judge::student(|| $krate::$name($($arg),*))
             }
+            crate::judge::fn_type! { [$($alias)?] $name ($($ty),*) -> $ret }
         )+
     };
 }
 pub(crate) use student_fns;
+
+/// The type a row of [`student_fns!`] names, `pub(super) type NameFn = fn(…) -> …;`, or nothing
+/// for a row without `as NameFn`.
+macro_rules! fn_type {
+    ([] $name:ident ($($ty:ty),*) -> $ret:ty) => {};
+    ([$alias:ident] $name:ident ($($ty:ty),*) -> $ret:ty) => {
+        #[doc = concat!("The type of `", stringify!($name), "` and of the mistakes planted in its place.")]
+        pub(super) type $alias = fn($($ty),*) -> $ret;
+    };
+}
+pub(crate) use fn_type;

@@ -8,17 +8,17 @@ pub(super) use crate::check::{CheckResult, Failure, close3, ensure, fail, near3,
 
 // The student's functions, each value taken through `judge::student` (the lecture is `judged`).
 crate::judge::student_fns! { l01_transforms:
-    fn translate(t: Vec3) -> Mat4;
+    fn translate(t: Vec3) -> Mat4 as VecToMat;
     fn scale(s: Vec3) -> Mat4;
-    fn rotate_x(angle: Float) -> Mat4;
+    fn rotate_x(angle: Float) -> Mat4 as AngleToMat;
     fn rotate_y(angle: Float) -> Mat4;
     fn rotate_z(angle: Float) -> Mat4;
-    fn transform_point(m: &Mat4, p: Vec3) -> Vec3;
+    fn transform_point(m: &Mat4, p: Vec3) -> Vec3 as ApplyFn;
     fn transform_vector(m: &Mat4, v: Vec3) -> Vec3;
-    fn rotate_axis(axis: Vec3, angle: Float) -> Mat4;
-    fn frame(origin: Vec3, i: Vec3, j: Vec3, k: Vec3) -> Mat4;
-    fn is_basis(i: Vec3, j: Vec3, k: Vec3) -> bool;
-    fn screen_coords(x: u32, y: u32, width: u32, height: u32) -> (Float, Float);
+    fn rotate_axis(axis: Vec3, angle: Float) -> Mat4 as AxisAngleFn;
+    fn frame(origin: Vec3, i: Vec3, j: Vec3, k: Vec3) -> Mat4 as FrameFn;
+    fn is_basis(i: Vec3, j: Vec3, k: Vec3) -> bool as BasisFn;
+    fn screen_coords(x: u32, y: u32, width: u32, height: u32) -> (Float, Float) as ScreenFn;
 }
 
 /// `l01_transforms::look_at`, through `judge::student` (its error as the variant's index: the
@@ -49,14 +49,7 @@ pub(super) fn orthographic_ray(camera: &OrthographicCamera, sx: Float, sy: Float
     crate::judge::student(|| camera.generate_ray(sx, sy))
 }
 
-pub(super) type VecToMat = fn(Vec3) -> Mat4;
-pub(super) type AngleToMat = fn(Float) -> Mat4;
-pub(super) type AxisAngleFn = fn(Vec3, Float) -> Mat4;
-pub(super) type ApplyFn = fn(&Mat4, Vec3) -> Vec3;
-pub(super) type FrameFn = fn(Vec3, Vec3, Vec3, Vec3) -> Mat4;
-pub(super) type BasisFn = fn(Vec3, Vec3, Vec3) -> bool;
 pub(super) type LookAtFn = fn(Vec3, Vec3, Vec3) -> Result<Mat4, CameraError>;
-pub(super) type ScreenFn = fn(u32, u32, u32, u32) -> (Float, Float);
 pub(super) type PerspectiveFn = fn(&PerspectiveCamera, Float, Float) -> Ray;
 pub(super) type OrthographicFn = fn(&OrthographicCamera, Float, Float) -> Ray;
 

@@ -9,15 +9,13 @@ pub(super) use crate::check::{
     CheckResult, close, close3, ensure, fail, maybe, num, ray, show_hit, vec3, wide,
 };
 
-pub(super) type SphereFn = fn(&Ray, Vec3, Float, Interval) -> Option<Hit>;
-
 /// Tolerance on t, points and normals of a unit sphere a few units away:
 /// the three methods round differently, each by a few ulp of 1.
 pub(super) const TOL: Float = 64.0 * Float::EPSILON;
 
 // The student's functions, each value taken through `judge::student` (the lecture is `judged`).
 crate::judge::student_fns! { l02_ray_casting:
-    fn hit_sphere_algebraic(ray: &Ray, center: Vec3, radius: Float, range: Interval) -> Option<Hit>;
+    fn hit_sphere_algebraic(ray: &Ray, center: Vec3, radius: Float, range: Interval) -> Option<Hit> as SphereFn;
     fn hit_sphere_geometric(ray: &Ray, center: Vec3, radius: Float, range: Interval) -> Option<Hit>;
     fn hit_sphere_stable(ray: &Ray, center: Vec3, radius: Float, range: Interval) -> Option<Hit>;
     fn hit_plane(ray: &Ray, normal: Vec3, offset: Float, range: Interval) -> Option<Hit>;

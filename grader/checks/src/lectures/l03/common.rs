@@ -16,16 +16,16 @@ pub(super) use raylab_testing::exact::{Ratio, exact_span};
 
 // The student's functions, each value taken through `judge::student` (the lecture is `judged`).
 crate::judge::student_fns! { l03_polygons_triangles:
-    fn hit_slabs(ray: &Ray, min: Vec3, max: Vec3, range: Interval) -> Option<(Float, Float)>;
-    fn hit_box(ray: &Ray, min: Vec3, max: Vec3, range: Interval) -> Option<Hit>;
-    fn inside_crossings(polygon: &[Vec2], p: Vec2) -> bool;
-    fn winding_number(polygon: &[Vec2], p: Vec2) -> i32;
-    fn newell_normal(vertices: &[Vec3]) -> Vec3;
-    fn hit_polygon(ray: &Ray, vertices: &[Vec3], range: Interval) -> Option<Hit>;
-    fn edge_function(p: Vec3, q: Vec3) -> Float;
-    fn interpolate_normal(normals: &[Vec3; 3], beta: Float, gamma: Float) -> Vec3;
-    fn hit_triangle(ray: &Ray, vertices: &[Vec3; 3], normals: Option<&[Vec3; 3]>, range: Interval) -> Option<Hit>;
-    fn hit_mesh(ray: &Ray, mesh: &Mesh, range: Interval) -> Option<Hit>;
+    fn hit_slabs(ray: &Ray, min: Vec3, max: Vec3, range: Interval) -> Option<(Float, Float)> as SlabsFn;
+    fn hit_box(ray: &Ray, min: Vec3, max: Vec3, range: Interval) -> Option<Hit> as BoxFn;
+    fn inside_crossings(polygon: &[Vec2], p: Vec2) -> bool as InsideFn;
+    fn winding_number(polygon: &[Vec2], p: Vec2) -> i32 as WindingFn;
+    fn newell_normal(vertices: &[Vec3]) -> Vec3 as NewellFn;
+    fn hit_polygon(ray: &Ray, vertices: &[Vec3], range: Interval) -> Option<Hit> as PolygonFn;
+    fn edge_function(p: Vec3, q: Vec3) -> Float as EdgeFn;
+    fn interpolate_normal(normals: &[Vec3; 3], beta: Float, gamma: Float) -> Vec3 as InterpolateFn;
+    fn hit_triangle(ray: &Ray, vertices: &[Vec3; 3], normals: Option<&[Vec3; 3]>, range: Interval) -> Option<Hit> as HitTriangleFn;
+    fn hit_mesh(ray: &Ray, mesh: &Mesh, range: Interval) -> Option<Hit> as MeshFn;
 }
 
 /// A triangle hit of the student's, taken through `judge::student` field by field (the
@@ -53,17 +53,7 @@ macro_rules! triangle_fns {
 }
 triangle_fns!(hit_triangle_cramer, hit_triangle_moller_trumbore, hit_triangle_watertight);
 
-pub(super) type SlabsFn = fn(&Ray, Vec3, Vec3, Interval) -> Option<(Float, Float)>;
-pub(super) type BoxFn = fn(&Ray, Vec3, Vec3, Interval) -> Option<Hit>;
-pub(super) type InsideFn = fn(&[Vec2], Vec2) -> bool;
-pub(super) type WindingFn = fn(&[Vec2], Vec2) -> i32;
-pub(super) type NewellFn = fn(&[Vec3]) -> Vec3;
-pub(super) type PolygonFn = fn(&Ray, &[Vec3], Interval) -> Option<Hit>;
 pub(super) type TriangleFn = fn(&Ray, Vec3, Vec3, Vec3, Interval) -> Option<TriangleHit>;
-pub(super) type EdgeFn = fn(Vec3, Vec3) -> Float;
-pub(super) type InterpolateFn = fn(&[Vec3; 3], Float, Float) -> Vec3;
-pub(super) type HitTriangleFn = fn(&Ray, &[Vec3; 3], Option<&[Vec3; 3]>, Interval) -> Option<Hit>;
-pub(super) type MeshFn = fn(&Ray, &Mesh, Interval) -> Option<Hit>;
 
 /// t, points and unit normals of unit-sized shapes a few units away: each
 /// method rounds a handful of operations on numbers ≤ 4 (most inputs are

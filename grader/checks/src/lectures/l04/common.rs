@@ -12,23 +12,15 @@ pub(super) use crate::check::{
 
 // The student's functions, each value taken through `judge::student` (the lecture is `judged`).
 crate::judge::student_fns! { l04_quadrics_transforms:
-    fn slab_z_span(o_z: Float, d_z: Float) -> Option<(Float, Float)>;
-    fn first_crossing(side: (Float, Float), caps: (Float, Float), range: Interval) -> Option<(Float, bool)>;
-    fn hit_cone(ray: &Ray, range: Interval) -> Option<Hit>;
+    fn slab_z_span(o_z: Float, d_z: Float) -> Option<(Float, Float)> as SpanFn;
+    fn first_crossing(side: (Float, Float), caps: (Float, Float), range: Interval) -> Option<(Float, bool)> as CrossingFn;
+    fn hit_cone(ray: &Ray, range: Interval) -> Option<Hit> as ShapeFn;
     fn hit_cylinder(ray: &Ray, range: Interval) -> Option<Hit>;
-    fn parametric_normal(ds_dalpha: Vec3, ds_dbeta: Vec3) -> Vec3;
-    fn ray_to_object(ray: &Ray, object_from_world: &Mat4) -> Ray;
-    fn normal_to_world(n: Vec3, object_from_world: &Mat4) -> Vec3;
-    fn hit_transformed(ray: &Ray, transform: &Transform, range: Interval, hit_local: ShapeFn) -> Option<Hit>;
+    fn parametric_normal(ds_dalpha: Vec3, ds_dbeta: Vec3) -> Vec3 as ParametricFn;
+    fn ray_to_object(ray: &Ray, object_from_world: &Mat4) -> Ray as ToObjectFn;
+    fn normal_to_world(n: Vec3, object_from_world: &Mat4) -> Vec3 as NormalFn;
+    fn hit_transformed(ray: &Ray, transform: &Transform, range: Interval, hit_local: ShapeFn) -> Option<Hit> as TransformedFn;
 }
-
-pub(super) type SpanFn = fn(Float, Float) -> Option<(Float, Float)>;
-pub(super) type CrossingFn = fn((Float, Float), (Float, Float), Interval) -> Option<(Float, bool)>;
-pub(super) type ShapeFn = fn(&Ray, Interval) -> Option<Hit>;
-pub(super) type ParametricFn = fn(Vec3, Vec3) -> Vec3;
-pub(super) type ToObjectFn = fn(&Ray, &Mat4) -> Ray;
-pub(super) type NormalFn = fn(Vec3, &Mat4) -> Vec3;
-pub(super) type TransformedFn = fn(&Ray, &Transform, Interval, ShapeFn) -> Option<Hit>;
 
 /// t, points and unit normals of unit-sized shapes a few units away: the
 /// inputs are dyadic, the roots, products and normalisations round a few

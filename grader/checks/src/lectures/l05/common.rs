@@ -8,16 +8,16 @@ pub(super) use crate::check::{CheckResult, close, close3, ensure, num, v, vec3};
 
 // The student's functions, each value taken through `judge::student` (the lecture is `judged`).
 crate::judge::student_fns! { l05_shading:
-    fn concentric_disk(u: Vec2) -> Vec2;
-    fn lambert(n: Vec3, l: Vec3) -> Float;
-    fn distance_falloff(attenuation: Attenuation, distance: Float) -> Float;
-    fn spot_falloff(cos_angle: Float, inner: Float, outer: Float) -> Float;
-    fn phong_specular(n: Vec3, l: Vec3, v: Vec3, exponent: Float) -> Float;
+    fn concentric_disk(u: Vec2) -> Vec2 as DiskFn;
+    fn lambert(n: Vec3, l: Vec3) -> Float as LambertFn;
+    fn distance_falloff(attenuation: Attenuation, distance: Float) -> Float as FalloffFn;
+    fn spot_falloff(cos_angle: Float, inner: Float, outer: Float) -> Float as SpotFn;
+    fn phong_specular(n: Vec3, l: Vec3, v: Vec3, exponent: Float) -> Float as SpecularFn;
     fn blinn_specular(n: Vec3, l: Vec3, v: Vec3, exponent: Float) -> Float;
-    fn reflect(v: Vec3, n: Vec3) -> Vec3;
-    fn shade_light(material: &Material, diffuse: Color, n: Vec3, v: Vec3, sample: &LightSample) -> Color;
+    fn reflect(v: Vec3, n: Vec3) -> Vec3 as ReflectFn;
+    fn shade_light(material: &Material, diffuse: Color, n: Vec3, v: Vec3, sample: &LightSample) -> Color as ShadeLightFn;
     fn shade_local(material: &Material, diffuse: Color, hit: &Hit, v: Vec3, lights: &[Light], ambient: Color)
-        -> Color;
+        -> Color as ShadeLocalFn;
 }
 
 /// A light sample of the student's, taken through `judge::student` field by field (the
@@ -43,16 +43,8 @@ pub(super) fn sample_light(light: &Light, point: Vec3, u: Vec2) -> LightSample {
     sampled(|| l05_shading::sample_light(light, point, u))
 }
 
-pub(super) type DiskFn = fn(Vec2) -> Vec2;
 pub(super) type SampleFn = fn(&Light, Vec3, Vec2) -> LightSample;
-pub(super) type LambertFn = fn(Vec3, Vec3) -> Float;
-pub(super) type FalloffFn = fn(Attenuation, Float) -> Float;
-pub(super) type SpotFn = fn(Float, Float, Float) -> Float;
 pub(super) type IlluminateFn = fn(&Light, Vec3) -> LightSample;
-pub(super) type SpecularFn = fn(Vec3, Vec3, Vec3, Float) -> Float;
-pub(super) type ReflectFn = fn(Vec3, Vec3) -> Vec3;
-pub(super) type ShadeLightFn = fn(&Material, Color, Vec3, Vec3, &LightSample) -> Color;
-pub(super) type ShadeLocalFn = fn(&Material, Color, &Hit, Vec3, &[Light], Color) -> Color;
 
 pub(super) const EPS: Float = Float::EPSILON;
 pub(super) const COLOR: Color = Color::new(1.0, 0.5, 0.25);

@@ -10,18 +10,18 @@ pub(super) use crate::judge::measured;
 
 // The student's functions, each value taken through `judge::student` (the lecture is `judged`).
 crate::judge::student_fns! { l06_shadows:
-    fn offset_origin(p: Vec3, n: Vec3, dir: Vec3, from: Vec3) -> Vec3;
+    fn offset_origin(p: Vec3, n: Vec3, dir: Vec3, from: Vec3) -> Vec3 as OffsetFn;
     fn offset_origin_fixed_t(p: Vec3, n: Vec3, dir: Vec3, from: Vec3) -> Vec3;
     fn offset_origin_fixed_normal(p: Vec3, n: Vec3, dir: Vec3, from: Vec3) -> Vec3;
-    fn occluded(scene: &dyn Intersector, from: Vec3, sample: &LightSample) -> bool;
-    fn transmittance(scene: &dyn Intersector, materials: &[Material], from: Vec3, sample: &LightSample) -> Color;
+    fn occluded(scene: &dyn Intersector, from: Vec3, sample: &LightSample) -> bool as OccludedFn;
+    fn transmittance(scene: &dyn Intersector, materials: &[Material], from: Vec3, sample: &LightSample) -> Color as TransmittanceFn;
     fn visibility(
         scene: &dyn Intersector,
         materials: &[Material],
         surface: &Surface,
         sample: &LightSample,
         mode: ShadowMode,
-    ) -> Color;
+    ) -> Color as VisibilityFn;
     fn shade_with_shadows(
         scene: &dyn Intersector,
         materials: &[Material],
@@ -36,7 +36,7 @@ crate::judge::student_fns! { l06_shadows:
         surface: &Surface,
         light: &Light,
         settings: ShadowSettings,
-    ) -> Color;
+    ) -> Color as AreaFn;
 }
 
 /// `l06_shadows::stratified`, through `judge::student`: the samples and the generator as the
@@ -55,14 +55,9 @@ pub(super) use std::sync::atomic::{AtomicUsize, Ordering};
 
 pub(super) use crate::check::{CheckResult, Failure, close3, ensure, num, v, vec3, wide, wide3};
 
-pub(super) type OffsetFn = fn(Vec3, Vec3, Vec3, Vec3) -> Vec3;
-pub(super) type OccludedFn = fn(&dyn Intersector, Vec3, &LightSample) -> bool;
-pub(super) type TransmittanceFn = fn(&dyn Intersector, &[Material], Vec3, &LightSample) -> Color;
-pub(super) type VisibilityFn = fn(&dyn Intersector, &[Material], &Surface, &LightSample, ShadowMode) -> Color;
 pub(super) type ShadeFn =
     fn(&dyn Intersector, &[Material], &Surface, &[Light], Color, ShadowSettings) -> Color;
 pub(super) type StratifiedFn = fn(u32, &mut Rng) -> Vec<Vec2>;
-pub(super) type AreaFn = fn(&dyn Intersector, &[Material], &Surface, &Light, ShadowSettings) -> Color;
 
 pub(super) const EPS: Float = Float::EPSILON;
 

@@ -5,10 +5,7 @@ pub(super) use raylab::{Float, Hit, Interval, Ray, Vec3};
 
 pub(super) use crate::check::{CheckResult, close, close3, ensure, fail, maybe, num, v, vec3, wide, wide3};
 
-pub(super) type FresnelFn = fn(Float, Float, Float) -> Float;
-pub(super) type MirrorFn = fn(Vec3, Vec3) -> Vec3;
 pub(super) type InterfaceFn = fn(&Hit, Float) -> Interface;
-pub(super) type RefractFn = fn(Vec3, Vec3, Float) -> Option<Vec3>;
 
 pub(super) const EPS: Float = Float::EPSILON;
 
@@ -30,10 +27,10 @@ pub(super) fn show(t: &Option<Vec3>) -> String {
 
 // The student's functions, each value taken through `judge::student` (the lecture is `judged`).
 crate::judge::student_fns! { l07_reflection_refraction:
-    fn schlick(cos_i: Float, eta_i: Float, eta_t: Float) -> Float;
+    fn schlick(cos_i: Float, eta_i: Float, eta_t: Float) -> Float as FresnelFn;
     fn fresnel_dielectric(cos_i: Float, eta_i: Float, eta_t: Float) -> Float;
-    fn mirror_direction(dir: Vec3, n: Vec3) -> Vec3;
-    fn refract(i: Vec3, n: Vec3, eta_ratio: Float) -> Option<Vec3>;
+    fn mirror_direction(dir: Vec3, n: Vec3) -> Vec3 as MirrorFn;
+    fn refract(i: Vec3, n: Vec3, eta_ratio: Float) -> Option<Vec3> as RefractFn;
 }
 crate::judge::student_fns! { l02_ray_casting:
     fn hit_sphere_stable(ray: &Ray, center: Vec3, radius: Float, range: Interval) -> Option<Hit>;

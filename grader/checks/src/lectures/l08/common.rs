@@ -9,9 +9,9 @@ pub(super) use crate::judge::{measured, student};
 
 // The student's functions, each value taken through `judge::student` (the lecture is `judged`).
 crate::judge::student_fns! { l08_ray_tree:
-    fn trace(world: &World, ray: &Ray, depth: u32, weight: Float, settings: &TraceSettings) -> Color;
+    fn trace(world: &World, ray: &Ray, depth: u32, weight: Float, settings: &TraceSettings) -> Color as TraceFn;
     fn render(world: &World, camera: &Camera, width: u32, height: u32, settings: &TraceSettings)
-        -> (Image, RayStats);
+        -> (Image, RayStats) as RenderFn;
 }
 pub(super) use raylab::{Color, Float, Image, Ray, Scene, Vec3};
 
@@ -20,9 +20,6 @@ pub(super) use raylab_testing::scenes::{
     BACKGROUND, block_with_tile, cuboid, directional, facing_mirrors, glass, matte, mirror, mirror_and_wall,
     plane, scene, sphere,
 };
-
-pub(super) type TraceFn = fn(&World, &Ray, u32, Float, &TraceSettings) -> Color;
-pub(super) type RenderFn = fn(&World, &Camera, u32, u32, &TraceSettings) -> (Image, RayStats);
 
 pub(super) const EPS: Float = Float::EPSILON;
 

@@ -15,7 +15,7 @@ pub(super) use crate::judge::student;
 // The student's functions, each value taken through `judge::student` (the lecture is `judged`);
 // a box crosses as its two corners.
 crate::judge::student_fns! { l09_acceleration:
-    fn sah_split(bins: &[Bin; BINS]) -> Option<(usize, Float)>;
+    fn sah_split(bins: &[Bin; BINS]) -> Option<(usize, Float)> as SahFn;
 }
 
 /// A box of the student's code, through `judge::student` as its corners.
@@ -77,7 +77,6 @@ pub(super) type SlabFn = fn(&Aabb, &Ray, Vec3, Interval) -> Option<(Float, Float
 pub(super) type SphereBoundsFn = fn(Vec3, Float) -> Aabb;
 pub(super) type TriangleBoundsFn = fn(&[Vec3; 3]) -> Aabb;
 pub(super) type TransformBoundsFn = fn(&Aabb, &Mat4) -> Aabb;
-pub(super) type SahFn = fn(&[Bin; BINS]) -> Option<(usize, Float)>;
 pub(super) type ClosestFn = fn(&Bvh, &Ray, Interval) -> Option<Hit>;
 pub(super) type AnyFn = fn(&Bvh, &Ray, Interval) -> bool;
 

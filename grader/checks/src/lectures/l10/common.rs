@@ -15,16 +15,16 @@ pub(super) use crate::check::{CheckResult, Failure, ensure, fail, num, vec3};
 
 // The student's functions, each value taken through `judge::student` (the lecture is `judged`).
 crate::judge::student_fns! { l10_textures_sampling:
-    fn sphere_uv(p: Vec3) -> Vec2;
-    fn plane_uv(p: Vec3, origin: Vec3, u_axis: Vec3, v_axis: Vec3) -> Vec2;
-    fn triangle_uv(uvs: &[Vec2; 3], beta: Float, gamma: Float) -> Vec2;
-    fn checker(uv: Vec2, scale: Float, a: Color, b: Color) -> Color;
-    fn checker_3d(p: Vec3, scale: Float, a: Color, b: Color) -> Color;
-    fn bilinear(image: &Image, uv: Vec2) -> Color;
-    fn filter_weight(filter: Filter, offset: Vec2) -> Float;
-    fn noise(p: Vec3) -> Float;
-    fn fractal_noise(p: Vec3, octaves: u32) -> Float;
-    fn marble(p: Vec3, octaves: u32, frequency: Float, amplitude: Float) -> Float;
+    fn sphere_uv(p: Vec3) -> Vec2 as SphereUvFn;
+    fn plane_uv(p: Vec3, origin: Vec3, u_axis: Vec3, v_axis: Vec3) -> Vec2 as PlaneUvFn;
+    fn triangle_uv(uvs: &[Vec2; 3], beta: Float, gamma: Float) -> Vec2 as TriangleUvFn;
+    fn checker(uv: Vec2, scale: Float, a: Color, b: Color) -> Color as CheckerFn;
+    fn checker_3d(p: Vec3, scale: Float, a: Color, b: Color) -> Color as Checker3dFn;
+    fn bilinear(image: &Image, uv: Vec2) -> Color as BilinearFn;
+    fn filter_weight(filter: Filter, offset: Vec2) -> Float as FilterFn;
+    fn noise(p: Vec3) -> Float as NoiseFn;
+    fn fractal_noise(p: Vec3, octaves: u32) -> Float as FractalFn;
+    fn marble(p: Vec3, octaves: u32, frequency: Float, amplitude: Float) -> Float as VeinFn;
     fn wood(p: Vec3, octaves: u32, frequency: Float, amplitude: Float) -> Float;
 }
 
@@ -40,16 +40,6 @@ pub(super) fn sample_offsets(pattern: Pattern, n: u32, rng: &mut Rng) -> Vec<Vec
     offsets
 }
 
-pub(super) type SphereUvFn = fn(Vec3) -> Vec2;
-pub(super) type PlaneUvFn = fn(Vec3, Vec3, Vec3, Vec3) -> Vec2;
-pub(super) type TriangleUvFn = fn(&[Vec2; 3], Float, Float) -> Vec2;
-pub(super) type CheckerFn = fn(Vec2, Float, Color, Color) -> Color;
-pub(super) type Checker3dFn = fn(Vec3, Float, Color, Color) -> Color;
-pub(super) type BilinearFn = fn(&Image, Vec2) -> Color;
-pub(super) type FilterFn = fn(Filter, Vec2) -> Float;
-pub(super) type NoiseFn = fn(Vec3) -> Float;
-pub(super) type FractalFn = fn(Vec3, u32) -> Float;
-pub(super) type VeinFn = fn(Vec3, u32, Float, Float) -> Float;
 pub(super) type SamplesFn = fn(Pattern, u32, &mut Rng) -> Vec<Vec2>;
 pub(super) type SupersampleFn =
     fn(&World, &Camera, u32, u32, &TraceSettings, u32, Pattern, Filter, u64) -> (Image, RayStats);
