@@ -10,19 +10,19 @@ use l05_shading::{
 use raylab::scene::{LightKind, Material, Shape, Specular};
 use raylab::{Hit, Interval, Ray, Scene, Vec3};
 
-use super::{Call, Trail};
+use super::Trail;
 use crate::stages::{self, Draws};
 
-/// The calls of stage `stage` (05, 06, 07, 08 or 10) at `(x, y)`.
-pub fn calls(stage: &str, scene: &Scene, (x, y): (u32, u32)) -> Option<Vec<Call>> {
+/// The calls of stage `stage` at `(x, y)`, made into `trail`; `None` at a stage whose pictures
+/// are not shaded (no calls).
+pub fn calls(stage: &str, scene: &Scene, (x, y): (u32, u32), trail: &mut Trail) -> Option<()> {
     let draws = stages::stage(stage)?.draws;
     if !draws.shades() {
         return None;
     }
-    let mut trail = Trail::default();
     #[cfg(feature = "complete")]
     if draws == Draws::Complete {
-        sampling(&mut trail, scene, (x, y));
+        sampling(trail, scene, (x, y));
     }
     let camera = l01_transforms::Camera::from_scene(&scene.camera, scene.width, scene.height).ok()?;
     let ray = camera.pixel_ray(x, y, scene.width, scene.height);
@@ -36,7 +36,7 @@ pub fn calls(stage: &str, scene: &Scene, (x, y): (u32, u32)) -> Option<Vec<Call>
     let found = objects.closest_hit(&ray, Interval::POSITIVE);
     let Some(hit) = found else {
         trail.push("02/closest_hit", "the eye ray: a miss", &false);
-        return Some(trail.0);
+        return Some(());
     };
     trail.push(
         hit_exercise(scene, hit.object),
@@ -54,7 +54,7 @@ pub fn calls(stage: &str, scene: &Scene, (x, y): (u32, u32)) -> Option<Vec<Call>
     let material = scene.materials.get(hit.material)?;
     #[cfg(feature = "complete")]
     let material: Cow<Material> = if draws == Draws::Complete {
-        textures(&mut trail, scene, &hit, material);
+        textures(trail, scene, &hit, material);
         l10_textures_sampling::surface_material(scene, &hit, material)
     } else {
         Cow::Borrowed(material)
@@ -64,7 +64,7 @@ pub fn calls(stage: &str, scene: &Scene, (x, y): (u32, u32)) -> Option<Vec<Call>
     let v = -ray.dir.normalize();
     for i in 0..scene.lights.len() {
         let at_hit = AtHit { scene, objects: objects.as_ref(), ray: &ray, hit: &hit, material: &material };
-        one_light(&mut trail, draws, &at_hit, i);
+        one_light(trail, draws, &at_hit, i);
     }
     if !draws.shadows() {
         let local = shade_local(&material, material.diffuse, &hit, v, &scene.lights, scene.ambient);
@@ -86,13 +86,13 @@ pub fn calls(stage: &str, scene: &Scene, (x, y): (u32, u32)) -> Option<Vec<Call>
     }
     #[cfg(feature = "l07")]
     if draws.mirrors() {
-        directions(&mut trail, draws, scene, &ray, &hit, &material);
+        directions(trail, draws, scene, &ray, &hit, &material);
     }
     #[cfg(feature = "l08")]
     if draws.traces() {
-        trace(&mut trail, draws, scene, objects.as_ref(), &ray);
+        trace(trail, draws, scene, objects.as_ref(), &ray);
     }
-    Some(trail.0)
+    Some(())
 }
 
 /// The eye ray's hit, where a light's calls are made: the scene, the intersector its shadow rays

@@ -120,6 +120,9 @@ pub fn first_difference(expected: &[Call], yours: &[Call]) -> Option<(String, St
         let Some(y) = yours.get(i) else {
             return Some((e.0.clone(), format!("your path ends before {} ({})", e.0, e.1)));
         };
+        if y.0 == PANICKED {
+            return Some((e.0.clone(), format!("{} ({}) panics: {}", e.0, e.1, cut(&y.1))));
+        }
         if (&e.0, &e.1) != (&y.0, &y.1) {
             return Some((
                 e.0.clone(),
@@ -150,13 +153,47 @@ pub fn first_difference(expected: &[Call], yours: &[Call]) -> Option<(String, St
 
 /// The calls of stage `stage` at pixel `pixel` of `scene`; `None` at a stage without calls or
 /// whose code is not in this build.
+///
+/// A call that panics (an exercise not started, or a bug) ends the calls there, recorded as a
+/// call of [`PANICKED`] with the panic's message: it is caught, and not the check's outcome (the
+/// panic hook lets it pass, [`probing`]), since the calls only explain a picture already failed.
 #[allow(unused_variables)]
 pub fn calls(stage: &str, scene: &raylab::Scene, pixel: (u32, u32)) -> Option<Vec<Call>> {
     #[cfg(feature = "l05")]
     if crate::stages::built(stage) {
-        return calls::calls(stage, scene, pixel);
+        let mut trail = Trail::default();
+        PROBING.set(true);
+        let walked = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+            calls::calls(stage, scene, pixel, &mut trail)
+        }));
+        PROBING.set(false);
+        return match walked {
+            Ok(walked) => walked.map(|()| trail.0),
+            Err(payload) => {
+                let message = payload
+                    .downcast_ref::<&str>()
+                    .map(|s| (*s).to_owned())
+                    .or_else(|| payload.downcast_ref::<String>().cloned())
+                    .unwrap_or_else(|| "a panic without a message".to_owned());
+                trail.0.push(Call(PANICKED.to_owned(), message, Vec::new()));
+                Some(trail.0)
+            }
+        };
     }
     None
+}
+
+/// The exercise of the call that records a panic on the path: its `at` is the panic's message.
+pub const PANICKED: &str = "panicked";
+
+thread_local! {
+    static PROBING: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+}
+
+/// Whether this thread is making the calls on a picture's path: a panic now is caught there and
+/// is not the check's outcome (`main`'s panic hook asks).
+pub fn probing() -> bool {
+    PROBING.get()
 }
 
 /// The exercise that makes a pixel of stage `stage` from the calls on its path, where that is a
@@ -225,7 +262,7 @@ impl<T: Numbers> Numbers for Option<T> {
 
 /// The calls as they are made, in order.
 #[derive(Default)]
-struct Trail(Vec<Call>);
+pub struct Trail(Vec<Call>);
 
 impl Trail {
     fn push(&mut self, exercise: &str, at: impl Into<String>, value: &(impl Numbers + ?Sized)) {
@@ -305,6 +342,12 @@ mod tests {
         let (exercise, how) = first_difference(&expected, &expected[..1]).unwrap();
         assert_eq!(exercise, "08/trace_ray");
         assert!(how.starts_with("your path ends before 08/trace_ray"), "{how}");
+        // A call that panicked is named as the reference's call at its place.
+        let panicked =
+            [expected[0].clone(), call(PANICKED, "not yet implemented: 08/trace_ray: Book §8.2", &[])];
+        let (exercise, how) = first_difference(&expected, &panicked).unwrap();
+        assert_eq!(exercise, "08/trace_ray");
+        assert_eq!(how, "08/trace_ray (c) panics: not yet implemented: 08/trace_ray: Book §8.2");
         // A refraction with no direction against one with a direction: the lengths differ.
         let none = [call("07/refract", "t", &[])];
         assert!(first_difference(&[call("07/refract", "t", &[0.0, 0.0, -1.0])], &none).is_some());
