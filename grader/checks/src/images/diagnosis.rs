@@ -10,13 +10,15 @@ use crate::scenes::{SceneFile, calls_snapshot};
 use crate::stages::{self, Draws};
 
 /// Where the student's calls at grid pixel `at` first differ from the blessed ones: the cause
-/// of a failed picture whose geometry matches; where every call agrees, the pixel loop's
-/// ([`path::pixel_loop`]). `None` where the stage has no calls or the pixel is not the grid's.
+/// of a failed picture whose geometry matches; where every call agrees and the pixel there
+/// differs (`differs_there`), the pixel loop's ([`path::pixel_loop`]). `None` where the stage has
+/// no calls, the pixel is not the grid's, or nothing is named.
 pub(super) fn path_difference(
     file: &SceneFile,
     stage: &str,
     scene: &Scene,
     at: (u32, u32),
+    differs_there: bool,
     yours: &[path::Call],
 ) -> Option<String> {
     let text = std::fs::read_to_string(calls_snapshot(file, stage)).ok()?;
@@ -27,7 +29,7 @@ pub(super) fn path_difference(
         Some((exercise, how)) => Some(format!(
             "at pixel ({x}, {y}), the first value on this picture's path that differs: {how}. Check {exercise}"
         )),
-        None => path::pixel_loop(stage, scene).map(|exercise| {
+        None => path::pixel_loop(stage, scene).filter(|_| differs_there).map(|exercise| {
             format!(
                 "at pixel ({x}, {y}) every exercise on this picture's path returns the reference's values, \
                  yet the pixel differs: check {exercise}, which makes the pixel from them"

@@ -119,8 +119,12 @@ pub(super) fn check_image(file: &SceneFile, stage: &str, dir: &Path) -> CheckRes
                 // The exercise whose value differs first on the path, with a symptom the whole
                 // picture shows (a guess from the picture would only blur the name); without
                 // one, what the picture shows.
-                let named =
-                    calls.as_deref().and_then(|calls| path_difference(file, stage, &scene, at, calls));
+                // Whether the grid pixel itself differs (with none that does, the view opens at the
+                // first differing pixel's block): only then may agreeing calls blame the pixel loop.
+                let differs_there = expected.is_some_and(|expected| pixel_differs(expected, &yours, at));
+                let named = calls
+                    .as_deref()
+                    .and_then(|calls| path_difference(file, stage, &scene, at, differs_there, calls));
                 match (named, seen) {
                     (Some(named), Some(Seen::Symptom(symptom))) => {
                         format!("your geometry matches; {named}. Over the picture: {symptom}")
@@ -164,17 +168,19 @@ pub(super) fn check_image(file: &SceneFile, stage: &str, dir: &Path) -> CheckRes
 /// comparison counts a pixel), the one nearest the first differing pixel `first`; where none
 /// does (a difference smaller than a block), the grid pixel of `first`'s block.
 pub(super) fn view_pixel(expected: &Image, yours: &Image, first: (u32, u32)) -> (u32, u32) {
-    let one = |image: &Image, (x, y): (u32, u32)| Image::from_pixels(1, 1, vec![image.get(x, y)]);
-    let differs = |p: &(u32, u32)| {
-        compare(&one(expected, *p), &one(yours, *p), CHANNEL_THRESHOLD).is_ok_and(|c| c.pixels_over > 0)
-    };
     let distance =
         |(x, y): (u32, u32)| (x.abs_diff(first.0) as u64).pow(2) + (y.abs_diff(first.1) as u64).pow(2);
     crate::trees::grid(expected.width, expected.height)
         .into_iter()
-        .filter(differs)
+        .filter(|p| pixel_differs(expected, yours, *p))
         .min_by_key(|p| distance(*p))
         .unwrap_or_else(|| crate::trees::nearest(first, expected.width, expected.height))
+}
+
+/// Whether pixel `p` of `yours` differs from `expected`'s, as the comparison counts a pixel.
+fn pixel_differs(expected: &Image, yours: &Image, p: (u32, u32)) -> bool {
+    let one = |image: &Image| Image::from_pixels(1, 1, vec![image.get(p.0, p.1)]);
+    compare(&one(expected), &one(yours), CHANNEL_THRESHOLD).is_ok_and(|c| c.pixels_over > 0)
 }
 
 /// Writes [`VIEW_DATA`] into `dir`: the scene's geometry, the blessed expected trees of the grid's
