@@ -24,7 +24,7 @@
 mod bless;
 mod diagnosis;
 mod geometry;
-mod picture;
+pub(crate) mod picture;
 
 use std::path::Path;
 

@@ -210,11 +210,9 @@ fn write_view(
     std::fs::write(dir.join(VIEW_DATA), script).map_err(|e| format!("{}: {e}", dir.display()))
 }
 
-/// Writes expected.png, yours.png and diff.png (FLIP's error map, magma
-/// colours) into `dir`, and measures the FLIP error.
-pub fn write_images(dir: &Path, expected: &Image, yours: &Image) -> Result<Images, String> {
-    std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
-    let (w, h) = (expected.width, expected.height);
+/// FLIP's per-pixel error between `expected` and `yours` (same size), on their 8-bit sRGB values
+/// at nv-flip's default viewing distance (0 identical, 1 opposite); a NaN pixel shown as magenta.
+pub fn flip_error(expected: &Image, yours: &Image) -> nv_flip::FlipImageFloat {
     let rgb8 = |image: &Image| -> Vec<u8> {
         image
             .pixels
@@ -222,11 +220,20 @@ pub fn write_images(dir: &Path, expected: &Image, yours: &Image) -> Result<Image
             .flat_map(|c| if c.is_finite() { raylab::color::to_srgb8(*c) } else { [255, 0, 255] })
             .collect()
     };
-    let error = nv_flip::flip(
+    let (w, h) = (expected.width, expected.height);
+    nv_flip::flip(
         nv_flip::FlipImageRgb8::with_data(w, h, &rgb8(expected)),
         nv_flip::FlipImageRgb8::with_data(w, h, &rgb8(yours)),
         nv_flip::DEFAULT_PIXELS_PER_DEGREE,
-    );
+    )
+}
+
+/// Writes expected.png, yours.png and diff.png (FLIP's error map, magma
+/// colours) into `dir`, and measures the FLIP error.
+pub fn write_images(dir: &Path, expected: &Image, yours: &Image) -> Result<Images, String> {
+    std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+    let (w, h) = (expected.width, expected.height);
+    let error = flip_error(expected, yours);
     let values = error.to_vec();
     let flip_mean = values.iter().map(|&v| v as f64).sum::<f64>() / values.len().max(1) as f64;
     let flip_fraction_over =

@@ -48,20 +48,7 @@ pub fn load_scene(relative: &str, divisor: u32) -> Result<Scene, String> {
 /// sRGB values at nv-flip's default viewing distance (0 identical, 1 opposite). A NaN pixel is
 /// shown as magenta, as the grader's image checks do.
 pub fn mean_flip(reference: &Image, test: &Image) -> f64 {
-    let rgb8 = |image: &Image| -> Vec<u8> {
-        image
-            .pixels
-            .iter()
-            .flat_map(|c| if c.is_finite() { raylab::color::to_srgb8(*c) } else { [255, 0, 255] })
-            .collect()
-    };
-    let (w, h) = (reference.width, reference.height);
-    let error = nv_flip::flip(
-        nv_flip::FlipImageRgb8::with_data(w, h, &rgb8(reference)),
-        nv_flip::FlipImageRgb8::with_data(w, h, &rgb8(test)),
-        nv_flip::DEFAULT_PIXELS_PER_DEGREE,
-    );
-    let values = error.to_vec();
+    let values = crate::images::picture::flip_error(reference, test).to_vec();
     values.iter().map(|&v| f64::from(v)).sum::<f64>() / values.len().max(1) as f64
 }
 
