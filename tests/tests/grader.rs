@@ -14,6 +14,12 @@
 //! The patched copies are graded with `grader grade --submission` in one work
 //! folder under `target/workbench/`, kept between runs so that each patch
 //! rebuilds only its lecture.
+//!
+//! The tests that take minutes (the handout, a type error graded whole, the
+//! weeks, the accepted answers, the catalogue, the recipe) are `#[ignore]`d:
+//! `cargo test -p workbench-tests -- --ignored` runs them, and CI does every
+//! time. `cargo test --workspace` keeps the reference and one real submission
+//! graded end to end through the judge (chaos).
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -78,6 +84,7 @@ fn the_checks_and_the_exercises_name_each_other(grade: &Value) {
 }
 
 #[test]
+#[ignore = "the whole workbench (minutes): cargo test -p workbench-tests -- --ignored; CI runs it"]
 fn the_handout_compiles_and_scores_zero_without_a_crash() {
     let dir = scratch().join("handout");
     let out =
@@ -374,6 +381,7 @@ fn chaos_ends_in_the_right_verdicts() {
 }
 
 #[test]
+#[ignore = "the whole workbench (minutes): cargo test -p workbench-tests -- --ignored; CI runs it"]
 fn a_type_error_costs_only_its_lecture_and_those_built_on_it() {
     let _turn = WORK.lock().unwrap_or_else(|e| e.into_inner());
     let file = "lectures/07-reflection-refraction/src/refract.rs";
@@ -409,6 +417,7 @@ fn a_type_error_costs_only_its_lecture_and_those_built_on_it() {
 /// only); every check of a later lecture is not started or blocked, none crashed. The weeks are
 /// graded in order in the shared work folder, so each rebuilds only lecture N and those after it.
 #[test]
+#[ignore = "the whole workbench (minutes): cargo test -p workbench-tests -- --ignored; CI runs it"]
 fn each_week_grades_its_lectures_images_included() {
     let _turn = WORK.lock().unwrap_or_else(|e| e.into_inner());
     let handout = scratch().join("week-handout");
@@ -626,6 +635,7 @@ fn accepted() -> Vec<Accepted> {
 /// submission, and so do the lecture's own tests, run in the work folder it was graded in (a
 /// lecture's test stricter than its checks would fail here).
 #[test]
+#[ignore = "the whole workbench (minutes): cargo test -p workbench-tests -- --ignored; CI runs it"]
 fn every_accepted_answer_passes_the_lectures_checks_and_its_tests() {
     let _turn = WORK.lock().unwrap_or_else(|e| e.into_inner());
     let answers = accepted();
@@ -701,6 +711,7 @@ fn the_catalogue_has_thirty_mistakes_whose_patches_apply() {
 
 /// Each mistake applied alone, graded on the check that must catch it.
 #[test]
+#[ignore = "the whole workbench (minutes): cargo test -p workbench-tests -- --ignored; CI runs it"]
 fn every_catalogued_mistake_fails_the_check_that_should_catch_it() {
     let _turn = WORK.lock().unwrap_or_else(|e| e.into_inner());
     let mut missed = Vec::new();
@@ -769,6 +780,7 @@ fn the_gradescope_bundle_has_its_scripts_and_the_pristine_workspace() {
 /// its exercise, and the book's checks (the exercise tables, the `Book: §` references, the
 /// generated lists) pass with its chapter in SUMMARY.md.
 #[test]
+#[ignore = "the whole workbench (minutes): cargo test -p workbench-tests -- --ignored; CI runs it"]
 fn a_lecture_added_by_the_recipe_alone_is_graded_handed_out_and_in_the_book() {
     let copy = scratch().join("recipe");
     let tree = copy.join("tree");

@@ -8,6 +8,9 @@
 //! process that runs the student's code reports values and never a verdict,
 //! and what only the judge may read (the snapshots, the hidden checks) is not
 //! in the tree where the student's code is built and run.
+//!
+//! The attacks on the verdict and the grading user's take minutes: `#[ignore]`d,
+//! run by `cargo test -p workbench-tests -- --ignored` and by CI every time.
 
 mod support;
 
@@ -76,6 +79,7 @@ fn attacked() -> Vec<(String, String, String)> {
 }
 
 #[test]
+#[ignore = "the whole workbench (minutes): cargo test -p workbench-tests -- --ignored; CI runs it"]
 fn attacks_on_the_verdict_score_nothing_and_change_nothing_else() {
     let _turn = WORK.lock().unwrap_or_else(|e| e.into_inner());
     let patches = attacked();
@@ -320,6 +324,7 @@ fn code_that_would_run_before_main_does_not_compile_and_the_list_is_the_judges()
 /// left. Every process the student's code ran in recorded its user: the grading user's, always.
 /// Needs root on Linux (useradd, a change of user); elsewhere it says SKIPPED.
 #[test]
+#[ignore = "the whole workbench (minutes): cargo test -p workbench-tests -- --ignored; CI runs it"]
 fn as_the_grading_user_the_students_code_can_neither_forge_nor_disturb_the_grade() {
     let _turn = WORK.lock().unwrap_or_else(|e| e.into_inner());
     let root_user = Command::new("id").arg("-u").output().is_ok_and(|o| o.stdout.trim_ascii() == b"0");
@@ -417,7 +422,7 @@ fn as_the_grading_user_the_students_code_can_neither_forge_nor_disturb_the_grade
     let _ = std::fs::remove_file(&json);
     let path =
         format!("{}:{}", shared.join("toolchain/bin").display(), std::env::var("PATH").unwrap_or_default());
-    let out = Command::new(grader_binary())
+    let out = incremental(&mut Command::new(grader_binary()))
         .current_dir(root())
         .args(["grade", "--submission", dir.to_str().unwrap(), "--workdir"])
         .arg(shared.join("work"))

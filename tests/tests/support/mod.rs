@@ -58,10 +58,24 @@ pub fn grader_binary() -> &'static Path {
     })
 }
 
+/// The builds of submissions (the shared work folder, the judge) are incremental whatever the
+/// environment says: the work folder is built again for every patch graded in it (the catalogue's
+/// mistakes, the weeks), and an incremental rebuild of a lecture and the checks took 1.35 s
+/// against 4.5 s without (median of 3, alternating; CI turns incremental builds off for the builds
+/// it makes once). Every grade of a submission says the same, or the judge's build would flip
+/// between the two and be rebuilt whole.
+pub fn incremental(command: &mut Command) -> &mut Command {
+    command.env("CARGO_INCREMENTAL", "1")
+}
+
 /// Runs the instructor's grader with `args` and reads the JSON it writes to `json`.
 pub fn grader(args: &[&str], json: &Path) -> (Value, String) {
     let _ = std::fs::remove_file(json);
-    let out = Command::new(grader_binary())
+    let mut command = Command::new(grader_binary());
+    if args.contains(&"--submission") {
+        incremental(&mut command);
+    }
+    let out = command
         .current_dir(root())
         .args(args)
         .args(["--format", "json", "-o", json.to_str().unwrap()])
