@@ -1,0 +1,77 @@
+#!/usr/bin/env bash
+# A student's loop, measured: edit → verdict per lecture. For each lecture 01–10, three rounds
+# alternating the lectures: a one-line edit (a comment appended to the lecture's lib.rs), then
+# `cargo run -q -p grader -- NN` (total); then the same command again with nothing to rebuild
+# (rerun: cargo's no-op and the checks' run). Prints per lecture the medians of total and rerun,
+# and their difference (rebuild: the lecture, the checks crate and the link).
+#
+#   scripts/measure-edit-verdict.sh             the table (~3 minutes on 2 cores)
+#   scripts/measure-edit-verdict.sh --debuginfo the relink after an edit and a cold build of the
+#                                               checks, with the workspace's debug info against
+#                                               full debug info everywhere (~3 minutes)
+#
+# The lectures' files are put back as they were (their contents; their times set in the past).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+if [ "${1:-}" = "--debuginfo" ]; then
+  lib=lectures/04-quadrics-transforms/src/lib.rs
+  variant() {
+    local name=$1; shift
+    local target; target=$(mktemp -d)
+    local s e
+    s=$(date +%s.%N)
+    CARGO_TARGET_DIR=$target cargo build -q "$@" -p raylab-checks --bin raylab-checks \
+      --no-default-features --features l04
+    e=$(date +%s.%N)
+    echo "$name: cold build $(echo "$e - $s" | bc) s, binary $(stat -c %s "$target/debug/raylab-checks") bytes"
+    cp "$lib" "$target/lib.rs"
+    for i in 1 2 3; do
+      echo "// edit $i" >> "$lib"
+      s=$(date +%s.%N)
+      CARGO_TARGET_DIR=$target cargo build -q "$@" -p raylab-checks --bin raylab-checks \
+        --no-default-features --features l04
+      e=$(date +%s.%N)
+      cp "$target/lib.rs" "$lib"
+      echo "$name: rebuild after an edit of lecture 04 $(echo "$e - $s" | bc) s"
+    done
+    touch -d '2026-01-01' "$lib"
+    rm -rf "$target"
+  }
+  variant "full debug info" --config 'profile.dev.package."*".debug=true' \
+    --config 'profile.dev.package.raylab-checks.debug=true'
+  variant "the workspace's"
+  exit 0
+fi
+
+raw=$(mktemp)
+cargo run -q -p grader > /dev/null 2>&1 || true
+for i in 1 2 3; do
+  for d in lectures/[0-9][0-9]-*/; do
+    n=$(basename "$d" | cut -c1-2)
+    f=$d/src/lib.rs
+    cp "$f" "$raw.bak"
+    echo "// edit $i" >> "$f"
+    s=$(date +%s.%N)
+    cargo run -q -p grader -- "$n" > /dev/null 2>&1 || true
+    e=$(date +%s.%N)
+    cargo run -q -p grader -- "$n" > /dev/null 2>&1 || true
+    e2=$(date +%s.%N)
+    cp "$raw.bak" "$f"
+    touch -d '2026-01-01' "$f"
+    echo "$n $(echo "$e - $s" | bc) $(echo "$e2 - $e" | bc)" >> "$raw"
+  done
+done
+python3 - "$raw" <<'EOF'
+import collections, statistics, sys
+rows = collections.defaultdict(list)
+for line in open(sys.argv[1]):
+    n, total, rerun = line.split()
+    rows[n].append((float(total), float(rerun)))
+print("lecture  total  rerun  rebuild   (seconds, median of 3)")
+for n in sorted(rows):
+    total = statistics.median(t for t, _ in rows[n])
+    rerun = statistics.median(r for _, r in rows[n])
+    print(f"{n}       {total:5.2f}  {rerun:5.2f}  {total - rerun:5.2f}")
+EOF
+rm -f "$raw" "$raw.bak"
