@@ -25,15 +25,17 @@
 //! reports from how the subject ended. What the student's process can send
 //! is what the student's code could return: values, never a verdict.
 
+use std::cell::{Cell, RefCell};
 use std::io::{BufReader, BufWriter, Read, Write};
 use std::net::{TcpListener, TcpStream};
-use std::panic::Location;
-use std::sync::{Mutex, OnceLock};
+use std::panic::{AssertUnwindSafe, Location, catch_unwind, resume_unwind};
+use std::rc::Rc;
+use std::sync::Mutex;
 
 use serde::de::DeserializeOwned;
 use serde::{Deserialize, Serialize};
 
-use raylab_protocol::{JUDGE_LISTENING, JUDGE_VERDICT, NO_VERDICT};
+use raylab_protocol::JUDGE_LISTENING;
 
 use crate::check::{Outcome, fail};
 
@@ -51,23 +53,85 @@ enum Frame {
     Call { bytes: Vec<u8> },
 }
 
-/// How this process takes part in a check.
-enum Mode {
+/// How this process takes part in a check: made by `main` (local grading, or
+/// [`Role::subject`] and [`Role::judge`] from the driver's arguments) and handed
+/// to the check it runs ([`enter`]).
+pub enum Role {
     /// One process runs the student's code and judges it: local grading.
     Direct,
     /// Runs the student's code and reports its values.
-    Subject(Channel),
+    Subject(Subject),
     /// Judges from the values reported.
     Judge(Channel),
+}
+
+/// The subject's side of a check: its channel, and whether the check's code is inside a
+/// [`student`] call's `f` (whose values are part of the outer one, not sent on their own).
+pub struct Subject {
+    channel: Channel,
+    inside: Cell<bool>,
 }
 
 /// The connection to the other process, buffered both ways: a check may send
 /// tens of thousands of small values (the leak test's rays), so the subject
 /// writes them out in blocks, and flushes before it waits for a decision and
 /// when the check ends (`flush`) or panics.
-struct Channel {
+pub struct Channel {
     out: Mutex<BufWriter<TcpStream>>,
     input: Mutex<BufReader<TcpStream>>,
+}
+
+/// Why a check ended before its code did; `main` ends the process accordingly. Raised from deep
+/// in a check's code ([`end`]) and returned by [`enter`].
+#[derive(Debug)]
+pub enum Ended {
+    /// No verdict from this process: the other one is gone (a subject that stopped early, the
+    /// judge with its verdict), or this subject was sent what no judge sends. The driver gives the
+    /// verdict from how the subject ended (`NO_VERDICT`).
+    Early,
+    /// The judge's verdict, reached before the check's end: the panic the subject reported, or
+    /// values out of step.
+    Verdict(Outcome),
+}
+
+impl Role {
+    /// The subject's role: connects to the judge at `address` before any of the student's code
+    /// runs, and says `token`.
+    pub fn subject(address: &str, token: u64) -> Result<Role, String> {
+        let mut stream = TcpStream::connect(address).map_err(|e| format!("the judge at {address}: {e}"))?;
+        stream
+            .write_all(&raylab_protocol::hello(token))
+            .map_err(|e| format!("the judge at {address}: {e}"))?;
+        Ok(Role::Subject(Subject { channel: Channel::new(stream)?, inside: Cell::new(false) }))
+    }
+
+    /// The judge's role: listens on a loopback port, prints `listening ADDR` on stdout for the
+    /// driver, and takes the first connection that says `token` as the subject's. Another
+    /// connection is dropped: one meant for an earlier judge on the same port (the driver's, sent
+    /// to a judge that had already ended). `None`: the driver's word that the subject ended
+    /// without connecting (no verdict).
+    pub fn judge(token: u64) -> Result<Option<Role>, String> {
+        let listener = TcpListener::bind("127.0.0.1:0").map_err(|e| format!("a loopback port: {e}"))?;
+        let address = listener.local_addr().map_err(|e| e.to_string())?;
+        let mut out = std::io::stdout().lock();
+        writeln!(out, "{JUDGE_LISTENING}{address}").and_then(|()| out.flush()).map_err(|e| e.to_string())?;
+        loop {
+            let (mut stream, _) = listener.accept().map_err(|e| format!("the subject's connection: {e}"))?;
+            // A connection that says nothing is not waited for long.
+            let _ = stream.set_read_timeout(Some(std::time::Duration::from_secs(2)));
+            let mut hello = [0u8; 8];
+            if stream.read_exact(&mut hello).is_err() {
+                continue;
+            }
+            if hello == raylab_protocol::hello(token) {
+                stream.set_read_timeout(None).map_err(|e| format!("the subject's connection: {e}"))?;
+                return Ok(Some(Role::Judge(Channel::new(stream)?)));
+            }
+            if hello == raylab_protocol::no_subject(token) {
+                return Ok(None);
+            }
+        }
+    }
 }
 
 impl Channel {
@@ -81,10 +145,39 @@ impl Channel {
     }
 }
 
-static MODE: OnceLock<Mode> = OnceLock::new();
+thread_local! {
+    /// The role of the check running on this thread, for the length of [`enter`]; none outside
+    /// one (the checks' own tests): local grading.
+    static ROLE: RefCell<Option<Rc<Role>>> = const { RefCell::new(None) };
+}
 
-fn mode() -> &'static Mode {
-    MODE.get_or_init(|| Mode::Direct)
+/// Runs `check` in `role`: the values, decisions and calls of the student's code it makes
+/// ([`student`], [`decide`], [`call`]) go where `role` says. Its value, or why it ended early
+/// ([`Ended`]: the process then ends, in `main`). Any other panic goes on (after the panic hook
+/// has recorded it).
+pub fn enter<T>(role: Role, check: impl FnOnce() -> T) -> Result<T, Ended> {
+    let outer = ROLE.replace(Some(Rc::new(role)));
+    let result = catch_unwind(AssertUnwindSafe(check));
+    ROLE.set(outer);
+    match result {
+        Ok(value) => Ok(value),
+        Err(payload) => match payload.downcast::<Ended>() {
+            Ok(ended) => Err(*ended),
+            Err(panic) => resume_unwind(panic),
+        },
+    }
+}
+
+/// The role of the check running on this thread.
+fn role() -> Rc<Role> {
+    ROLE.with_borrow(|role| role.clone()).unwrap_or_else(|| Rc::new(Role::Direct))
+}
+
+/// Ends the check at once, up to [`enter`]: an unwind that the panic hook does not see (it is
+/// not a panic of the check's code) and no code of the student's is on the stack to catch (the
+/// subject calls none on the channel's side of a [`student`] call; the judge runs none).
+fn end(ended: Ended) -> ! {
+    resume_unwind(Box::new(ended))
 }
 
 /// The largest frame read: a 1024 × 1024 image of f64 colours is 24 MiB.
@@ -99,17 +192,17 @@ const MAX_FRAME: u32 = 64 << 20;
 pub fn student<T: Serialize + DeserializeOwned>(f: impl FnOnce() -> T) -> T {
     // The call site is named only where a value crosses: local grading pays nothing.
     let at = Location::caller();
-    match mode() {
-        Mode::Direct => f(),
-        Mode::Subject(_) if INSIDE.get() => f(),
-        Mode::Subject(channel) => {
-            INSIDE.set(true);
+    match &*role() {
+        Role::Direct => f(),
+        Role::Subject(subject) if subject.inside.get() => f(),
+        Role::Subject(subject) => {
+            subject.inside.set(true);
             let value = f();
-            INSIDE.set(false);
-            send(channel, &site(at), &value);
+            subject.inside.set(false);
+            send(&subject.channel, &site(at), &value, false);
             value
         }
-        Mode::Judge(channel) => receive(channel, &site(at)),
+        Role::Judge(channel) => receive(channel, &site(at), true),
     }
 }
 
@@ -121,25 +214,20 @@ pub fn measured<T: Serialize + DeserializeOwned>(f: impl FnOnce() -> T) -> (T, r
     student(|| raylab::stats::measure(f))
 }
 
-thread_local! {
-    /// Whether this thread is inside a `student` call's `f` (the subject's).
-    static INSIDE: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
-}
-
 /// A decision only the judge can make (it holds the snapshots and the hidden
 /// answers): `f()` in the judge (sent to the subject) and locally; in the
 /// subject, the judge's answer (`f` is not run).
 #[track_caller]
 pub fn decide<T: Serialize + DeserializeOwned>(f: impl FnOnce() -> T) -> T {
     let at = Location::caller();
-    match mode() {
-        Mode::Direct => f(),
-        Mode::Judge(channel) => {
+    match &*role() {
+        Role::Direct => f(),
+        Role::Judge(channel) => {
             let value = f();
-            send(channel, &site(at), &value);
+            send(channel, &site(at), &value, true);
             value
         }
-        Mode::Subject(channel) => receive(channel, &site(at)),
+        Role::Subject(subject) => receive(&subject.channel, &site(at), false),
     }
 }
 
@@ -147,9 +235,9 @@ pub fn decide<T: Serialize + DeserializeOwned>(f: impl FnOnce() -> T) -> T {
 /// judge and locally; in the subject nothing (`None`). What the subject must know of its result
 /// to take the same path it learns through [`decide`].
 pub fn judge_only<T>(f: impl FnOnce() -> T) -> Option<T> {
-    match mode() {
-        Mode::Subject(_) => None,
-        Mode::Direct | Mode::Judge(_) => Some(f()),
+    match &*role() {
+        Role::Subject(_) => None,
+        Role::Direct | Role::Judge(_) => Some(f()),
     }
 }
 
@@ -158,36 +246,41 @@ fn site(at: &Location) -> String {
     format!("{}:{}", at.file(), at.line())
 }
 
-/// Sends a value; a decision (the judge's) goes out at once, the subject's values in blocks.
-fn send<T: Serialize>(channel: &Channel, site: &str, value: &T) {
+/// Sends a value: a decision (the judge's, `now`) goes out at once, the subject's values in
+/// blocks. The other side gone ends the check: nothing left to do here.
+fn send<T: Serialize>(channel: &Channel, site: &str, value: &T, now: bool) {
     let bytes = postcard::to_stdvec(value).expect("a check's values encode");
-    let now = matches!(mode(), Mode::Judge(_));
-    write_frame(channel, &Frame::Value { site: site.to_owned(), bytes }, now);
+    if write_frame(channel, &Frame::Value { site: site.to_owned(), bytes }, now).is_err() {
+        end(Ended::Early);
+    }
 }
 
-fn write_frame(channel: &Channel, frame: &Frame, flush: bool) {
+/// Writes a frame (and sends it, if `flush`); an error when the other side is gone.
+fn write_frame(channel: &Channel, frame: &Frame, flush: bool) -> Result<(), ()> {
     let bytes = postcard::to_stdvec(frame).expect("a frame encodes");
-    let Ok(mut stream) = channel.out.lock() else { std::process::exit(NO_VERDICT) };
+    let mut stream = channel.out.lock().map_err(|_| ())?;
     let length = u32::try_from(bytes.len()).unwrap_or(u32::MAX).to_le_bytes();
     let written = stream.write_all(&length).and_then(|()| stream.write_all(&bytes));
-    // The other side gone: nothing left to do here.
-    if written.and_then(|()| if flush { stream.flush() } else { Ok(()) }).is_err() {
-        std::process::exit(NO_VERDICT);
-    }
+    written.and_then(|()| if flush { stream.flush() } else { Ok(()) }).map_err(|_| ())
 }
 
 /// Sends what the subject has buffered: before it waits, and when its check ends.
 pub fn flush() {
-    if let Mode::Subject(channel) = mode()
-        && let Ok(mut stream) = channel.out.lock()
-    {
+    if let Role::Subject(subject) = &*role() {
+        flush_channel(&subject.channel);
+    }
+}
+
+fn flush_channel(channel: &Channel) {
+    if let Ok(mut stream) = channel.out.lock() {
         let _ = stream.flush();
     }
 }
 
+/// The next frame, `None` once the other side has ended; a subject about to wait sends what it
+/// has first.
 fn read_frame(channel: &Channel) -> Result<Option<Frame>, String> {
-    // A subject about to wait for a decision sends what it has first.
-    flush();
+    flush_channel(channel);
     let Ok(mut stream) = channel.input.lock() else { return Ok(None) };
     let mut length = [0u8; 4];
     if stream.read_exact(&mut length).is_err() {
@@ -204,23 +297,27 @@ fn read_frame(channel: &Channel) -> Result<Option<Frame>, String> {
     postcard::from_bytes(&bytes).map(Some).map_err(|e| format!("an unreadable frame ({e})"))
 }
 
-/// The next value from the other process, for the call at `site`. In the
-/// judge, a panic the subject reported ends the check with that panic's
-/// outcome, and a value that does not fit ends it as failed.
-fn receive<T: DeserializeOwned>(channel: &Channel, site: &str) -> T {
+/// The next value from the other process, for the call at `site` (`judging`: this is the
+/// judge). In the judge, a panic the subject reported ends the check with that panic's outcome,
+/// and a value that does not fit ends it as failed.
+fn receive<T: DeserializeOwned>(channel: &Channel, site: &str, judging: bool) -> T {
     let frame = match read_frame(channel) {
         Ok(Some(frame)) => frame,
         // The other side ended: the subject before the check did, or the judge with its verdict.
-        Ok(None) => std::process::exit(NO_VERDICT),
-        Err(e) => out_of_step(&e),
+        Ok(None) => end(Ended::Early),
+        Err(e) => out_of_step(&e, judging),
     };
     match frame {
-        Frame::Value { site: sent, bytes } if sent == site => {
-            postcard::from_bytes(&bytes).unwrap_or_else(|e| out_of_step(&format!("a value at {site} ({e})")))
+        Frame::Value { site: sent, bytes } if sent == site => postcard::from_bytes(&bytes)
+            .unwrap_or_else(|e| out_of_step(&format!("a value at {site} ({e})"), judging)),
+        Frame::Value { site: sent, .. } => {
+            out_of_step(&format!("a value from {sent} where {site} was due"), judging)
         }
-        Frame::Value { site: sent, .. } => out_of_step(&format!("a value from {sent} where {site} was due")),
-        Frame::Panic { message, file, line } => conclude(&Outcome::Panicked { message, file, line }),
-        Frame::Call { .. } => out_of_step("a call where a value was due"),
+        Frame::Panic { message, file, line } if judging => {
+            end(Ended::Verdict(Outcome::Panicked { message, file, line }))
+        }
+        Frame::Panic { .. } => out_of_step("a panic report where a decision was due", judging),
+        Frame::Call { .. } => out_of_step("a call where a value was due", judging),
     }
 }
 
@@ -231,28 +328,31 @@ const CALL_SITE: &str = "a call of the judge's";
 /// place locally, by `here`, which returns its value encoded; in the judge, sent to the subject,
 /// which makes it and returns the value.
 pub fn call<T: DeserializeOwned>(call: Vec<u8>, here: impl FnOnce() -> Result<Vec<u8>, String>) -> T {
-    match mode() {
-        Mode::Direct => {
+    match &*role() {
+        Role::Direct => {
             let bytes = here().unwrap_or_else(|e| panic!("{e}"));
             postcard::from_bytes(&bytes).unwrap_or_else(|e| panic!("a call's value: {e}"))
         }
-        Mode::Judge(channel) => {
-            write_frame(channel, &Frame::Call { bytes: call }, true);
-            receive(channel, CALL_SITE)
+        Role::Judge(channel) => {
+            if write_frame(channel, &Frame::Call { bytes: call }, true).is_err() {
+                end(Ended::Early);
+            }
+            receive(channel, CALL_SITE, true)
         }
         // The subject's build has no hidden checks: nothing in it makes a call.
-        Mode::Subject(_) => std::process::exit(NO_VERDICT),
+        Role::Subject(_) => end(Ended::Early),
     }
 }
 
-/// The subject of a hidden check (`raylab-checks serve`): makes each call the judge sends and
-/// returns its value, until the judge ends (with its verdict): `answer` makes an encoded call
-/// and encodes its value. A panic of the student's code goes to the judge through the panic
-/// hook, as in a check.
+/// The subject of a hidden check (`raylab-checks serve`, in [`enter`]): makes each call the judge
+/// sends and returns its value, until the judge ends (with its verdict): `answer` makes an
+/// encoded call and encodes its value. A panic of the student's code goes to the judge through
+/// the panic hook, as in a check.
 pub fn serve_calls(answer: impl Fn(&[u8]) -> Result<Vec<u8>, String>) -> Result<(), String> {
-    let Mode::Subject(channel) = mode() else { return Err("serve needs --channel".into()) };
+    let role = role();
+    let Role::Subject(subject) = &*role else { return Err("serve needs --channel".into()) };
     loop {
-        let frame = match read_frame(channel) {
+        let frame = match read_frame(&subject.channel) {
             Ok(Some(frame)) => frame,
             // The judge has its verdict.
             Ok(None) => return Ok(()),
@@ -262,115 +362,95 @@ pub fn serve_calls(answer: impl Fn(&[u8]) -> Result<Vec<u8>, String>) -> Result<
             return Err("the judge sent a frame other than a call".into());
         };
         match answer(&bytes) {
-            Ok(bytes) => write_frame(channel, &Frame::Value { site: CALL_SITE.to_owned(), bytes }, true),
+            Ok(bytes) => {
+                let value = Frame::Value { site: CALL_SITE.to_owned(), bytes };
+                if write_frame(&subject.channel, &value, true).is_err() {
+                    return Ok(());
+                }
+            }
             Err(message) => report_panic(&message, file!(), line!()),
         }
     }
-}
-
-/// Ends the judge with `outcome` as the verdict.
-fn conclude(outcome: &Outcome) -> ! {
-    if let Ok(json) = serde_json::to_string(outcome) {
-        let _ = print_verdict(&json);
-    }
-    std::process::exit(0)
 }
 
 /// The judge's verdict, a `verdict JSON` line on its stdout: a pipe only the
 /// driver reads (a file could be written by the student's process too).
 pub fn print_verdict(json: &str) -> Result<(), String> {
     let mut out = std::io::stdout().lock();
-    writeln!(out, "{JUDGE_VERDICT}{json}").and_then(|()| out.flush()).map_err(|e| e.to_string())
+    writeln!(out, "{}{json}", raylab_protocol::JUDGE_VERDICT)
+        .and_then(|()| out.flush())
+        .map_err(|e| e.to_string())
 }
 
-/// Values that no honest subject sends: the check fails (never passes), saying so.
-fn out_of_step(what: &str) -> ! {
-    if !matches!(mode(), Mode::Judge(_)) {
-        std::process::exit(NO_VERDICT);
+/// Values that no honest process sends: in the judge, the check fails (never passes), saying so;
+/// in the subject, it ends without a verdict.
+fn out_of_step(what: &str, judging: bool) -> ! {
+    if !judging {
+        end(Ended::Early);
     }
-    conclude(&Outcome::Failed(fail(
+    end(Ended::Verdict(Outcome::Failed(fail(
         "the values your code returned, as the check's process reported them",
         "one value of the expected type per call, in the check's order",
         what,
         "the process that ran your code sent what the check never sends: it ran something other than \
          the check (an exit or a write of its own in your code?)",
-    )))
+    ))))
 }
 
-/// The subject's side: connects to the judge at `address` before any of the
-/// student's code runs, and reports a panic of the student's code to it.
-pub fn connect(address: &str, token: u64) -> Result<(), String> {
-    let mut stream = TcpStream::connect(address).map_err(|e| format!("the judge at {address}: {e}"))?;
-    stream.write_all(&raylab_protocol::hello(token)).map_err(|e| format!("the judge at {address}: {e}"))?;
-    MODE.set(Mode::Subject(Channel::new(stream)?)).map_err(|_| "the mode is set twice".to_owned())
-}
-
-/// Tells the judge that the student's code panicked (the subject's panic hook).
+/// Tells the judge that the student's code panicked (the subject's panic hook). Called while
+/// panicking, it cannot end the check itself: a judge already gone is left to the panic.
 pub fn report_panic(message: &str, file: &str, line: u32) {
-    if let Mode::Subject(channel) = mode() {
-        write_frame(
-            channel,
-            &Frame::Panic { message: message.to_owned(), file: file.to_owned(), line },
-            true,
-        );
+    if let Role::Subject(subject) = &*role() {
+        let frame = Frame::Panic { message: message.to_owned(), file: file.to_owned(), line };
+        let _ = write_frame(&subject.channel, &frame, true);
     }
-}
-
-/// The judge's side: listens on a loopback port, prints `listening ADDR` on stdout for the
-/// driver, and takes the first connection that says `token` as the subject's. Another
-/// connection is dropped: one meant for an earlier judge on the same port (the driver's, sent
-/// to a judge that had already ended). The driver's word that the subject ended without
-/// connecting ends this judge without a verdict.
-pub fn serve(token: u64) -> Result<(), String> {
-    let listener = TcpListener::bind("127.0.0.1:0").map_err(|e| format!("a loopback port: {e}"))?;
-    let address = listener.local_addr().map_err(|e| e.to_string())?;
-    let mut out = std::io::stdout().lock();
-    writeln!(out, "{JUDGE_LISTENING}{address}").and_then(|()| out.flush()).map_err(|e| e.to_string())?;
-    let stream = loop {
-        let (mut stream, _) = listener.accept().map_err(|e| format!("the subject's connection: {e}"))?;
-        // A connection that says nothing is not waited for long.
-        let _ = stream.set_read_timeout(Some(std::time::Duration::from_secs(2)));
-        let mut hello = [0u8; 8];
-        if stream.read_exact(&mut hello).is_err() {
-            continue;
-        }
-        if hello == raylab_protocol::hello(token) {
-            stream.set_read_timeout(None).map_err(|e| format!("the subject's connection: {e}"))?;
-            break stream;
-        }
-        if hello == raylab_protocol::no_subject(token) {
-            std::process::exit(NO_VERDICT);
-        }
-    };
-    drop(listener);
-    MODE.set(Mode::Judge(Channel::new(stream)?)).map_err(|_| "the mode is set twice".to_owned())
 }
 
 /// Functions of a lecture crate, each wrapped so that its value goes through
 /// [`student`]: a lecture's checks import these instead of the crate's own,
-/// and their code reads as before. A row's `as NameFn` also names the function's
-/// type, for the checks that take the function under test as an argument (the
-/// lecture's, or a planted mistake in the checks' tests): the signature is
-/// written once outside the lecture, here.
+/// and their code reads as before. The signature is written once outside the
+/// lecture, here, and a row may add:
+///
+/// - `as NameFn`: the function's type, for the checks that take the function under test as
+///   an argument (the lecture's, or a planted mistake in the checks' tests);
+/// - `= EXPR`: what the row calls, where that is not the crate's function of the same name
+///   (a method: `Aabb::new(min, max).surface_area()`);
+/// - `, remote`: the call a hidden check makes of it, as a module of the same name (`remote.rs`:
+///   `name::call`, made by the subject, and `name::answer`, the subject's side).
 ///
 /// ```ignore
 /// student_fns! { l02_ray_casting:
 ///     fn hit_plane(ray: &Ray, normal: Vec3, offset: Float, range: Interval) -> Option<Hit> as PlaneFn;
+///     fn hit_sphere_stable(ray: &Ray, center: Vec3, radius: Float, range: Interval) -> Option<Hit>, remote;
 /// }
 /// ```
 macro_rules! student_fns {
-    ($krate:ident: $(fn $name:ident($($arg:ident: $ty:ty),* $(,)?) -> $ret:ty $(as $alias:ident)?;)+) => {
+    ($krate:ident: $(
+        fn $name:ident($($arg:ident: $ty:ty),* $(,)?) -> $ret:ty $(as $alias:ident)? $(= $body:expr)? $(, $remote:ident)?;
+    )+) => {
         $(
             #[doc = concat!("`", stringify!($krate), "::", stringify!($name), "`, its value taken through `judge::student`.")]
             #[track_caller]
             pub(super) fn $name($($arg: $ty),*) -> $ret {
-                crate::judge::student(|| $krate::$name($($arg),*))
+                crate::judge::student(|| crate::judge::row_call!([$($body)?] $krate::$name($($arg),*)))
             }
             crate::judge::fn_type! { [$($alias)?] $name ($($ty),*) -> $ret }
+            crate::remote::remote_row! { [$($remote)?] $krate::$name($($arg: $ty),*) -> $ret = [$($body)?] }
         )+
     };
 }
 pub(crate) use student_fns;
+
+/// What a row of [`student_fns!`] calls: its `= EXPR`, or the crate's function of its name.
+macro_rules! row_call {
+    ([] $krate:ident::$name:ident($($arg:ident),*)) => {
+        $krate::$name($($arg),*)
+    };
+    ([$body:expr] $krate:ident::$name:ident($($arg:ident),*)) => {
+        $body
+    };
+}
+pub(crate) use row_call;
 
 /// The type a row of [`student_fns!`] names, `pub(super) type NameFn = fn(…) -> …;`, or nothing
 /// for a row without `as NameFn`.
@@ -382,3 +462,93 @@ macro_rules! fn_type {
     };
 }
 pub(crate) use fn_type;
+
+/// The protocol in one process: a judge and a subject on two threads, over a loopback
+/// connection, running the same check code (as the two processes do).
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::thread;
+
+    /// A subject's role and a judge's, connected.
+    fn pair() -> (Role, Role) {
+        let listener = TcpListener::bind("127.0.0.1:0").unwrap();
+        let client = TcpStream::connect(listener.local_addr().unwrap()).unwrap();
+        let (server, _) = listener.accept().unwrap();
+        let subject =
+            Role::Subject(Subject { channel: Channel::new(client).unwrap(), inside: Cell::new(false) });
+        (subject, Role::Judge(Channel::new(server).unwrap()))
+    }
+
+    /// A check: one value of the student's code, then a decision on it (the judge's).
+    fn doubled<T: Serialize + DeserializeOwned>(
+        answer: impl FnOnce() -> T,
+        double: impl FnOnce(T) -> u64,
+    ) -> u64 {
+        let value = student(answer);
+        decide(|| double(value))
+    }
+
+    /// Runs `subject` and `judge` side by side in their roles; what each ended with.
+    fn both<S: Send + 'static, J>(
+        subject: impl FnOnce() -> S + Send + 'static,
+        judge: impl FnOnce() -> J,
+    ) -> (Result<S, Ended>, Result<J, Ended>) {
+        let (subject_role, judge_role) = pair();
+        let subject = thread::spawn(move || enter(subject_role, subject));
+        let judged = enter(judge_role, judge);
+        (subject.join().expect("the subject's thread"), judged)
+    }
+
+    #[test]
+    fn the_judge_takes_the_subjects_value_and_the_subject_the_judges_decision() {
+        let (subject, judged) = both(
+            || doubled(|| 21u64, |_| unreachable!("the subject makes no decision")),
+            || doubled(|| -> u64 { unreachable!("the judge runs no student code") }, |x| 2 * x),
+        );
+        assert_eq!(subject.unwrap(), 42);
+        assert_eq!(judged.unwrap(), 42);
+    }
+
+    #[test]
+    fn a_value_of_another_type_fails_the_check_in_the_judge_and_ends_the_subject_without_a_verdict() {
+        let (subject, judged) = both(
+            || doubled(|| u64::MAX, |_| unreachable!()),
+            || doubled(|| -> bool { unreachable!() }, u64::from),
+        );
+        // The judge concluded, so the subject, waiting for the decision, finds the channel closed.
+        assert!(matches!(subject, Err(Ended::Early)), "{subject:?}");
+        let Err(Ended::Verdict(Outcome::Failed(failure))) = judged else { panic!("{judged:?}") };
+        assert!(failure.cause.contains("never sends"), "{failure:?}");
+    }
+
+    #[test]
+    fn a_panic_the_subject_reports_is_the_judges_verdict() {
+        let (_, judged) = both(
+            || report_panic("boom", "src/sphere.rs", 7),
+            || doubled(|| -> u64 { unreachable!() }, |x| x),
+        );
+        let Err(Ended::Verdict(Outcome::Panicked { message, file, line })) = judged else {
+            panic!("{judged:?}")
+        };
+        assert_eq!((message.as_str(), file.as_str(), line), ("boom", "src/sphere.rs", 7));
+    }
+
+    #[test]
+    fn a_subject_that_stops_early_leaves_the_judge_without_a_verdict() {
+        let (subject, judged) = both(|| (), || doubled(|| -> u64 { unreachable!() }, |x| x));
+        assert!(subject.is_ok());
+        assert!(matches!(judged, Err(Ended::Early)), "{judged:?}");
+    }
+
+    #[test]
+    fn outside_a_role_and_directly_the_code_runs_in_place_and_a_panic_goes_on() {
+        assert_eq!(doubled(|| 4u64, |x| x + 1), 5);
+        assert_eq!(enter(Role::Direct, || doubled(|| 4u64, |x| x + 1)).unwrap(), 5);
+        let panicked = catch_unwind(|| enter(Role::Direct, || panic!("the student's bug")));
+        let payload = panicked.expect_err("the panic goes on");
+        assert_eq!(payload.downcast_ref::<&str>(), Some(&"the student's bug"));
+        // The role ends with its check.
+        assert!(matches!(&*role(), Role::Direct));
+    }
+}

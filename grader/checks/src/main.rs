@@ -42,6 +42,7 @@ use std::process::ExitCode;
 use clap::{Parser, Subcommand};
 
 use crate::check::Outcome;
+use crate::judge::{Ended, Role};
 
 #[derive(Parser)]
 #[command(name = "grader", about = "The raylab checks and tools (run through `cargo run -p grader`).")]
@@ -109,49 +110,60 @@ enum Command {
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
-        Command::List => {
-            serde_json::to_string_pretty(&listed()).map(|json| println!("{json}")).map_err(|e| e.to_string())
-        }
+        Command::List => serde_json::to_string_pretty(&listed())
+            .map(|json| println!("{json}"))
+            .map(|()| ExitCode::SUCCESS)
+            .map_err(|e| e.to_string()),
         Command::Run { id, verdict, out, channel } => match (channel, verdict) {
             // Connected before any student code runs: the judge takes the first connection.
             (Some(address), _) => {
                 subject_limits();
                 token()
-                    .and_then(|token| judge::connect(&address, token))
-                    .and_then(|()| run(&id, VerdictTo::Judge, &out))
+                    .and_then(|token| Role::subject(&address, token))
+                    .and_then(|role| run(&id, VerdictTo::Judge, &out, role))
             }
-            (None, Some(file)) => run(&id, VerdictTo::File(file), &out),
+            (None, Some(file)) => run(&id, VerdictTo::File(file), &out, Role::Direct),
             (None, None) => Err("--verdict FILE or --channel ADDR".into()),
         },
         Command::Serve { channel } => {
             subject_limits();
-            token().and_then(|token| judge::connect(&channel, token)).and_then(|()| {
+            token().and_then(|token| Role::subject(&channel, token)).and_then(|role| {
                 install_panic_hook(Box::leak(Box::new(VerdictTo::Judge)));
-                judge::serve_calls(remote::answer_encoded)
+                match judge::enter(role, || judge::serve_calls(remote::answer_encoded)) {
+                    Ok(served) => served.map(|()| ExitCode::SUCCESS),
+                    Err(_) => Ok(no_verdict()),
+                }
             })
         }
         Command::Judge { id, out } => {
             platform::keep_others_out();
-            token().and_then(judge::serve).and_then(|()| run(&id, VerdictTo::Stdout, &out))
+            token().and_then(Role::judge).and_then(|role| match role {
+                Some(role) => run(&id, VerdictTo::Stdout, &out, role),
+                // The subject ended without connecting: how it ended is the verdict.
+                None => Ok(no_verdict()),
+            })
         }
         #[cfg(feature = "complete")]
-        Command::Render(args) => tools::render::render(&args),
+        Command::Render(args) => tools::render::render(&args).map(|()| ExitCode::SUCCESS),
         #[cfg(feature = "complete")]
-        Command::Bless { lecture } => images::bless(lecture.as_deref()),
+        Command::Bless { lecture } => images::bless(lecture.as_deref()).map(|()| ExitCode::SUCCESS),
         #[cfg(feature = "complete")]
-        Command::BenchRays(args) => tools::bench::bench_rays(&args),
+        Command::BenchRays(args) => tools::bench::bench_rays(&args).map(|()| ExitCode::SUCCESS),
         // INSTRUCTOR BEGIN
         #[cfg(feature = "complete")]
-        Command::Tradeoffs(args) => tools::tradeoffs::tradeoffs(&args),
+        Command::Tradeoffs(args) => tools::tradeoffs::tradeoffs(&args).map(|()| ExitCode::SUCCESS),
         // INSTRUCTOR END
     };
-    match result {
-        Ok(()) => ExitCode::SUCCESS,
-        Err(message) => {
-            eprintln!("error: {message}");
-            ExitCode::FAILURE
-        }
-    }
+    result.unwrap_or_else(|message| {
+        eprintln!("error: {message}");
+        ExitCode::FAILURE
+    })
+}
+
+/// How a judge or a subject ends without a verdict of its own: the driver gives the verdict
+/// from how the subject ended.
+fn no_verdict() -> ExitCode {
+    ExitCode::from(u8::try_from(raylab_protocol::NO_VERDICT).unwrap_or(u8::MAX))
 }
 
 /// The token the driver wrote on standard input for a judge and its subject.
@@ -203,27 +215,23 @@ impl VerdictTo {
     }
 }
 
-/// Runs check `id`: a panic hook records any panic as the outcome (the grader
-/// tells `todo!()` from other panics by its message), then the outcome
-/// replaces it when the check returns. A subject reports the panic to its
-/// judge instead, and writes nothing.
-fn run(id: &str, verdict: VerdictTo, out: &Path) -> Result<(), String> {
+/// Runs check `id` in `role` (`judge.rs`): a panic hook records any panic as the outcome (the
+/// grader tells `todo!()` from other panics by its message), then the outcome replaces it when
+/// the check returns. A subject reports the panic to its judge instead, and writes nothing. A
+/// check that ends early (the judge's verdict reached, or the other process gone) ends here.
+fn run(id: &str, verdict: VerdictTo, out: &Path, role: Role) -> Result<ExitCode, String> {
     // The panic hook holds it for the life of the process (a process per check).
     let verdict: &'static VerdictTo = Box::leak(Box::new(verdict));
     install_panic_hook(verdict);
-    let result = if id.split('/').nth(1).is_some_and(|kind| matches!(kind, "image" | "geometry" | "final")) {
-        images::run(id, out)
-    } else {
-        lectures::run(id)
+    let image = id.split('/').nth(1).is_some_and(|kind| matches!(kind, "image" | "geometry" | "final"));
+    let outcome = match judge::enter(role, || if image { images::run(id, out) } else { lectures::run(id) }) {
+        Ok(None) => return Err(format!("no check {id} in this build")),
+        Ok(Some(Ok(detail))) => Outcome::Passed { detail, images: None },
+        Ok(Some(Err(failure))) => Outcome::Failed(failure),
+        Err(Ended::Verdict(outcome)) => outcome,
+        Err(Ended::Early) => return Ok(no_verdict()),
     };
-    let Some(result) = result else {
-        return Err(format!("no check {id} in this build"));
-    };
-    let outcome = match result {
-        Ok(detail) => Outcome::Passed { detail, images: None },
-        Err(failure) => Outcome::Failed(failure),
-    };
-    verdict.write(&outcome)
+    verdict.write(&outcome).map(|()| ExitCode::SUCCESS)
 }
 
 /// Caps the process's memory and records any panic as the outcome (written where `verdict` says; a

@@ -5,70 +5,128 @@
 //! student's code it makes goes to the subject (`raylab-checks serve --channel ADDR`, built from
 //! the student's lectures without the hidden checks), which makes the call and sends the value
 //! back (`judge::call`). Graded locally, the call is made in place.
+//!
+//! The calls are the rows of `judge::student_fns!` marked `remote`: each yields a module of the
+//! function's name beside its proxy, with the call ([`remote_row!`]); [`ANSWERS`] is what the
+//! subject can answer.
 
+use serde::de::DeserializeOwned;
 use serde::{Deserialize, Serialize};
 
 #[allow(unused_imports, reason = "each lecture's types are used where its feature is on")]
-use raylab::{Float, Hit, Interval, Mat4, Ray, Vec3};
+use raylab::{Float, Interval, Mat4, Vec3};
 
-/// Declares the calls: each a variant of [`Call`], an arm of [`answer`] (behind its lecture's
-/// feature) and a function of the same name that makes the call through [`crate::judge::call`]
-/// (the judge knows calls only as bytes: [`answer_encoded`] makes one).
-macro_rules! remote_calls {
-    ($($feature:literal fn $name:ident($($arg:ident: $ty:ty),*) -> $ret:ty = $body:expr;)+) => {
-        /// A call of the student's code that the judge asks of the subject.
-        #[derive(Debug, Serialize, Deserialize)]
-        #[allow(non_camel_case_types, reason = "each variant is named as the function it calls")]
-        pub enum Call {
-            $($name { $($arg: $ty),* }),+
-        }
-
-        /// Makes `call` with the student's code: its value, encoded for the judge.
-        pub fn answer(call: Call) -> Result<Vec<u8>, String> {
-            match call {
-                $(
-                    #[allow(unused_variables)]
-                    Call::$name { $($arg),* } => {
-                        #[cfg(feature = $feature)]
-                        {
-                            let value: $ret = $body;
-                            return postcard::to_stdvec(&value).map_err(|e| e.to_string());
-                        }
-                        #[allow(unreachable_code)]
-                        Err(format!("lecture {} is not in this build", &$feature[1..]))
-                    }
-                )+
-            }
-        }
-
-        $(
-            #[doc = concat!("`", stringify!($name), "` of the student's code, made where the student's code runs.")]
-            #[allow(dead_code, reason = "called by the hidden checks, which only instructors' builds have")]
-            pub fn $name($($arg: $ty),*) -> $ret {
-                let call = Call::$name { $($arg),* };
-                let bytes = postcard::to_stdvec(&call).expect("a call encodes");
-                crate::judge::call(bytes, move || answer(call))
-            }
-        )+
-    };
+/// A call of the student's code that the judge asks of the subject: the row's name
+/// (`crate::function`) and its arguments, encoded.
+#[derive(Debug, Serialize, Deserialize)]
+struct Call {
+    function: String,
+    args: Vec<u8>,
 }
 
-remote_calls! {
-    "l01" fn rotate_z(angle: Float) -> Mat4 = l01_transforms::rotate_z(angle);
-    "l01" fn transform_vector(m: Mat4, v: Vec3) -> Vec3 = l01_transforms::transform_vector(&m, v);
-    "l02" fn hit_sphere_stable(ray: Ray, center: Vec3, radius: Float, range: Interval) -> Option<Hit> =
-        l02_ray_casting::hit_sphere_stable(&ray, center, radius, range);
-    "l03" fn hit_slabs(ray: Ray, min: Vec3, max: Vec3, range: Interval) -> Option<(Float, Float)> =
-        l03_polygons_triangles::hit_slabs(&ray, min, max, range);
-    "l05" fn lambert(n: Vec3, l: Vec3) -> Float = l05_shading::lambert(n, l);
-    "l07" fn refract(i: Vec3, n: Vec3, eta_ratio: Float) -> Option<Vec3> =
-        l07_reflection_refraction::refract(i, n, eta_ratio);
-    "l09" fn aabb_surface_area(min: Vec3, max: Vec3) -> Float =
-        l09_acceleration::Aabb::new(min, max).surface_area();
-}
+/// The subject's side of a call: its arguments encoded in, its value encoded out.
+type Answer = fn(&[u8]) -> Result<Vec<u8>, String>;
+
+/// The calls the subject makes, by name: each row of `student_fns!` marked `remote`.
+const ANSWERS: &[(&str, Answer)] = &[
+    #[cfg(feature = "l01")]
+    (crate::lectures::l01::common::rotate_z::NAME, crate::lectures::l01::common::rotate_z::answer),
+    #[cfg(feature = "l01")]
+    (
+        crate::lectures::l01::common::transform_vector::NAME,
+        crate::lectures::l01::common::transform_vector::answer,
+    ),
+    #[cfg(feature = "l02")]
+    (
+        crate::lectures::l02::common::hit_sphere_stable::NAME,
+        crate::lectures::l02::common::hit_sphere_stable::answer,
+    ),
+    #[cfg(feature = "l03")]
+    (crate::lectures::l03::common::hit_slabs::NAME, crate::lectures::l03::common::hit_slabs::answer),
+    #[cfg(feature = "l05")]
+    (crate::lectures::l05::common::lambert::NAME, crate::lectures::l05::common::lambert::answer),
+    #[cfg(feature = "l07")]
+    (crate::lectures::l07::common::refract::NAME, crate::lectures::l07::common::refract::answer),
+    #[cfg(feature = "l09")]
+    (
+        crate::lectures::l09::common::aabb_surface_area::NAME,
+        crate::lectures::l09::common::aabb_surface_area::answer,
+    ),
+];
 
 /// Makes the call `bytes` encode (the judge's frame) with the student's code: its value, encoded.
 pub fn answer_encoded(bytes: &[u8]) -> Result<Vec<u8>, String> {
     let call: Call = postcard::from_bytes(bytes).map_err(|e| format!("a call: {e}"))?;
-    answer(call)
+    let Some((_, answer)) = ANSWERS.iter().find(|(name, _)| *name == call.function) else {
+        return Err(format!("{} is not in this build", call.function));
+    };
+    answer(&call.args)
 }
+
+/// Makes the call of `function` (a row's `NAME`) with `args`, where the student's code runs:
+/// in place locally (`answer`), through the subject when judged.
+pub fn call<A: Serialize, T: DeserializeOwned>(function: &str, args: &A, answer: Answer) -> T {
+    let args = postcard::to_stdvec(args).expect("a call's arguments encode");
+    let call = postcard::to_stdvec(&Call { function: function.to_owned(), args: args.clone() })
+        .expect("a call encodes");
+    crate::judge::call(call, move || answer(&args))
+}
+
+/// An argument of a remote call as its row writes it: decoded as `Owned`, passed on as the row's
+/// type (a reference to it, or a copy).
+pub trait Param<'a> {
+    type Owned: DeserializeOwned;
+    fn lend(owned: &'a Self::Owned) -> Self;
+}
+
+impl<'a, T: DeserializeOwned> Param<'a> for &'a T {
+    type Owned = T;
+    fn lend(owned: &'a T) -> &'a T {
+        owned
+    }
+}
+
+/// The argument types passed by value.
+macro_rules! by_value {
+    ($($t:ty),+) => {
+        $(impl Param<'_> for $t {
+            type Owned = $t;
+            fn lend(owned: &$t) -> $t {
+                *owned
+            }
+        })+
+    };
+}
+by_value!(Float, Vec3, Interval, Mat4);
+
+/// A row of `judge::student_fns!` marked `remote`: `mod name` beside its proxy, with the row's
+/// `NAME`, its `call` (a hidden check's, through [`call`]) and its `answer` (the subject's);
+/// nothing for the other rows.
+macro_rules! remote_row {
+    ([] $($row:tt)*) => {};
+    ([remote] $krate:ident::$name:ident($($arg:ident: $ty:ty),*) -> $ret:ty = [$($body:expr)?]) => {
+        #[doc = concat!("`", stringify!($name), "` as a hidden check calls it (`remote.rs`).")]
+        #[allow(dead_code, reason = "called by the hidden checks, which only instructors' builds have")]
+        pub(crate) mod $name {
+            use super::*;
+
+            /// The call's name in the judge's frames.
+            pub(crate) const NAME: &str = concat!(stringify!($krate), "::", stringify!($name));
+
+            /// The call, made by the student's code where it runs.
+            pub(crate) fn call($($arg: $ty),*) -> $ret {
+                crate::remote::call(NAME, &($($arg,)*), answer)
+            }
+
+            /// The subject's side: the arguments decoded, the call made, its value encoded.
+            pub(crate) fn answer(args: &[u8]) -> Result<Vec<u8>, String> {
+                let ($($arg,)*): ($(<$ty as crate::remote::Param<'_>>::Owned,)*) =
+                    postcard::from_bytes(args).map_err(|e| format!("{NAME}'s arguments: {e}"))?;
+                $(let $arg: $ty = crate::remote::Param::lend(&$arg);)*
+                let value: $ret = crate::judge::row_call!([$($body)?] $krate::$name($($arg),*));
+                postcard::to_stdvec(&value).map_err(|e| e.to_string())
+            }
+        }
+    };
+}
+pub(crate) use remote_row;

@@ -29,16 +29,17 @@ mod h01 {
     mod code {
         pub(super) fn hidden() -> crate::check::CheckResult {
             use crate::check::close3;
-            use crate::remote::{rotate_z, transform_vector};
+            use crate::lectures::l01::common::{rotate_z, transform_vector};
             use raylab::{Float, Vec3};
             // R_z(90°) = [[0, −1, 0], [1, 0, 0], [0, 0, 1]]: x ↦ y and y ↦ −x; cos 90° rounds to ~6e-8 in f32.
-            let r = rotate_z(std::f64::consts::FRAC_PI_2 as Float);
+            let r = rotate_z::call(std::f64::consts::FRAC_PI_2 as Float);
             let case = "rotate_z(π/2) applied to the vectors x and y";
             let tolerance = 4.0 * Float::EPSILON;
             let cause =
                 "R_z(θ) = [[cos θ, −sin θ, 0], [sin θ, cos θ, 0], [0, 0, 1]]: counter-clockwise seen from +z";
-            close3(case, transform_vector(r, Vec3::X), Vec3::Y, tolerance, cause)?;
-            close3(case, transform_vector(r, Vec3::Y), -Vec3::X, tolerance, cause).map(|()| "2 cases".into())
+            close3(case, transform_vector::call(&r, Vec3::X), Vec3::Y, tolerance, cause)?;
+            close3(case, transform_vector::call(&r, Vec3::Y), -Vec3::X, tolerance, cause)
+                .map(|()| "2 cases".into())
         }
     }
 }
@@ -59,14 +60,18 @@ mod h02 {
     mod code {
         pub(super) fn hidden() -> crate::check::CheckResult {
             use crate::check::{close, fail};
-            use crate::remote::hit_sphere_stable;
+            use crate::lectures::l02::common::hit_sphere_stable;
             use raylab::{Float, Interval, Ray, Vec3};
             // Sphere r = 0.5 at (1, 2, −3); the ray from (1, 2.3, 2) along −z passes 0.3 from the
             // centre: half chord √(0.25 − 0.09) = 0.4, so t = 5 − 0.4 = 4.6 (and 5.4).
             let case = "sphere r = 0.5 at (1, 2, −3), ray from (1, 2.3, 2) along (0, 0, −1)";
             let ray = Ray::new(Vec3::new(1.0, 2.3, 2.0), Vec3::new(0.0, 0.0, -1.0));
-            let got =
-                hit_sphere_stable(ray, Vec3::new(1.0, 2.0, -3.0), 0.5, Interval::new(0.0, Float::INFINITY));
+            let got = hit_sphere_stable::call(
+                &ray,
+                Vec3::new(1.0, 2.0, -3.0),
+                0.5,
+                Interval::new(0.0, Float::INFINITY),
+            );
             let Some(hit) = got else {
                 return Err(fail(
                     case,
@@ -95,14 +100,14 @@ mod h03 {
     mod code {
         pub(super) fn hidden() -> crate::check::CheckResult {
             use crate::check::{close, fail};
-            use crate::remote::hit_slabs;
+            use crate::lectures::l03::common::hit_slabs;
             use raylab::{Float, Interval, Ray, Vec3};
             // Box [−1, 2] × [0, 3] × [1, 4]; ray from (0.5, 1, −10) along (0, 0, 2): x and y stay inside,
             // z enters at (1 + 10)/2 = 5.5 and leaves at (4 + 10)/2 = 7.
             let case = "box [−1, 2] × [0, 3] × [1, 4], ray from (0.5, 1, −10) along (0, 0, 2)";
             let ray = Ray::new(Vec3::new(0.5, 1.0, -10.0), Vec3::new(0.0, 0.0, 2.0));
-            let got = hit_slabs(
-                ray,
+            let got = hit_slabs::call(
+                &ray,
                 Vec3::new(-1.0, 0.0, 1.0),
                 Vec3::new(2.0, 3.0, 4.0),
                 Interval::new(0.0, Float::INFINITY),
@@ -137,15 +142,15 @@ mod h05 {
     mod code {
         pub(super) fn hidden() -> crate::check::CheckResult {
             use crate::check::close;
-            use crate::remote::lambert;
+            use crate::lectures::l05::common::lambert;
             use raylab::{Float, Vec3};
             // n = z, l = (0, 0.6, 0.8): cos θ = 0.8; the light mirrored behind the surface gives 0, not −0.8.
             let n = Vec3::Z;
             let case = "n = (0, 0, 1), l = (0, 0.6, 0.8)";
             let tolerance = 4.0 * Float::EPSILON;
-            close(case, lambert(n, Vec3::new(0.0, 0.6, 0.8)), 0.8, tolerance, "max(n·l, 0)")?;
+            close(case, lambert::call(n, Vec3::new(0.0, 0.6, 0.8)), 0.8, tolerance, "max(n·l, 0)")?;
             let case = "n = (0, 0, 1), l = (0, 0.6, −0.8): the light behind the surface";
-            let got = lambert(n, Vec3::new(0.0, 0.6, -0.8));
+            let got = lambert::call(n, Vec3::new(0.0, 0.6, -0.8));
             close(case, got, 0.0, 0.0, "max(n·l, 0): no negative light").map(|()| "2 cases".into())
         }
     }
@@ -164,7 +169,7 @@ mod h07 {
     mod code {
         pub(super) fn hidden() -> crate::check::CheckResult {
             use crate::check::{close3, fail};
-            use crate::remote::refract;
+            use crate::lectures::l07::common::refract;
             use raylab::{Float, Vec3};
             // i at 30° to the normal n = +y, going down: i = (sin 30°, −cos 30°, 0). Into glass
             // (η = 1/1.5): sin θt = sin 30° / 1.5 = 1/3, cos θt = √(8/9), t = (1/3, −√(8/9), 0).
@@ -172,7 +177,7 @@ mod h07 {
             let i = Vec3::new(s, -c, 0.0);
             let expected = Vec3::new(1.0 / 3.0, -(8.0 as Float / 9.0).sqrt(), 0.0);
             let case = "i at 30° from the normal (0, 1, 0), air to glass (η = 1/1.5)";
-            let Some(t) = refract(i, Vec3::Y, 1.0 / 1.5) else {
+            let Some(t) = refract::call(i, Vec3::Y, 1.0 / 1.5) else {
                 return Err(fail(
                     case,
                     "a refracted ray",
@@ -184,7 +189,7 @@ mod h07 {
             close3(case, t, expected, tolerance, "t = η i + (η cos θi − cos θt) n")?;
             // And back out along the reversed ray: the original direction, reversed (reciprocity).
             let case = "the refracted ray reversed, glass to air (η = 1.5), normal (0, −1, 0) facing it";
-            let Some(back) = refract(-t, -Vec3::Y, 1.5) else {
+            let Some(back) = refract::call(-t, -Vec3::Y, 1.5) else {
                 return Err(fail(
                     case,
                     "a refracted ray",
@@ -210,12 +215,12 @@ mod h09 {
     mod code {
         pub(super) fn hidden() -> crate::check::CheckResult {
             use crate::check::close;
-            use crate::remote::aabb_surface_area;
+            use crate::lectures::l09::common::aabb_surface_area;
             use raylab::{Float, Vec3};
             // 2(1·2 + 2·3 + 3·1) = 22, wherever the box is.
             let (min, max) = (Vec3::new(4.0, -1.0, 10.0), Vec3::new(5.0, 1.0, 13.0));
             let case = "the box [4, 5] × [−1, 1] × [10, 13]";
-            let got = aabb_surface_area(min, max);
+            let got = aabb_surface_area::call(min, max);
             close(case, got, 22.0, 8.0 * Float::EPSILON * 22.0, "2(dx·dy + dy·dz + dz·dx)")
                 .map(|()| "1 case".into())
         }

@@ -12,9 +12,9 @@ crate::judge::student_fns! { l01_transforms:
     fn scale(s: Vec3) -> Mat4;
     fn rotate_x(angle: Float) -> Mat4 as AngleToMat;
     fn rotate_y(angle: Float) -> Mat4;
-    fn rotate_z(angle: Float) -> Mat4;
+    fn rotate_z(angle: Float) -> Mat4, remote;
     fn transform_point(m: &Mat4, p: Vec3) -> Vec3 as ApplyFn;
-    fn transform_vector(m: &Mat4, v: Vec3) -> Vec3;
+    fn transform_vector(m: &Mat4, v: Vec3) -> Vec3, remote;
     fn rotate_axis(axis: Vec3, angle: Float) -> Mat4 as AxisAngleFn;
     fn frame(origin: Vec3, i: Vec3, j: Vec3, k: Vec3) -> Mat4 as FrameFn;
     fn is_basis(i: Vec3, j: Vec3, k: Vec3) -> bool as BasisFn;

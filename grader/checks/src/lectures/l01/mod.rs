@@ -64,7 +64,7 @@ declare_checks! {
 #[cfg(feature = "l01")]
 mod axis_angle;
 #[cfg(feature = "l01")]
-mod common;
+pub(crate) mod common;
 #[cfg(feature = "l01")]
 mod frame;
 #[cfg(feature = "l01")]

@@ -17,6 +17,6 @@ pub(super) const TOL: Float = 64.0 * Float::EPSILON;
 crate::judge::student_fns! { l02_ray_casting:
     fn hit_sphere_algebraic(ray: &Ray, center: Vec3, radius: Float, range: Interval) -> Option<Hit> as SphereFn;
     fn hit_sphere_geometric(ray: &Ray, center: Vec3, radius: Float, range: Interval) -> Option<Hit>;
-    fn hit_sphere_stable(ray: &Ray, center: Vec3, radius: Float, range: Interval) -> Option<Hit>;
+    fn hit_sphere_stable(ray: &Ray, center: Vec3, radius: Float, range: Interval) -> Option<Hit>, remote;
     fn hit_plane(ray: &Ray, normal: Vec3, offset: Float, range: Interval) -> Option<Hit>;
 }

@@ -41,7 +41,7 @@ declare_checks! {
 const CAMERA: &[&str] = &["01/look_at", "01/screen_coords", "01/PerspectiveCamera::generate_ray"];
 
 #[cfg(feature = "l02")]
-mod common;
+pub(crate) mod common;
 #[cfg(feature = "l02")]
 mod group;
 #[cfg(feature = "l02")]

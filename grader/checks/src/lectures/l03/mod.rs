@@ -75,7 +75,7 @@ declare_checks! {
 }
 
 #[cfg(feature = "l03")]
-mod common;
+pub(crate) mod common;
 #[cfg(feature = "l03")]
 mod mesh;
 #[cfg(feature = "l03")]

@@ -9,7 +9,7 @@ pub(super) use crate::check::{CheckResult, close, close3, ensure, num, v, vec3};
 // The student's functions, each value taken through `judge::student` (the lecture is `judged`).
 crate::judge::student_fns! { l05_shading:
     fn concentric_disk(u: Vec2) -> Vec2 as DiskFn;
-    fn lambert(n: Vec3, l: Vec3) -> Float as LambertFn;
+    fn lambert(n: Vec3, l: Vec3) -> Float as LambertFn, remote;
     fn distance_falloff(attenuation: Attenuation, distance: Float) -> Float as FalloffFn;
     fn spot_falloff(cos_angle: Float, inner: Float, outer: Float) -> Float as SpotFn;
     fn phong_specular(n: Vec3, l: Vec3, v: Vec3, exponent: Float) -> Float as SpecularFn;

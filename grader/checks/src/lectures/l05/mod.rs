@@ -53,7 +53,7 @@ declare_checks! {
 #[cfg(feature = "l05")]
 mod area_lights;
 #[cfg(feature = "l05")]
-mod common;
+pub(crate) mod common;
 #[cfg(feature = "l05")]
 mod lambert;
 #[cfg(feature = "l05")]

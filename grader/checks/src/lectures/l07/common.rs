@@ -30,7 +30,7 @@ crate::judge::student_fns! { l07_reflection_refraction:
     fn schlick(cos_i: Float, eta_i: Float, eta_t: Float) -> Float as FresnelFn;
     fn fresnel_dielectric(cos_i: Float, eta_i: Float, eta_t: Float) -> Float;
     fn mirror_direction(dir: Vec3, n: Vec3) -> Vec3 as MirrorFn;
-    fn refract(i: Vec3, n: Vec3, eta_ratio: Float) -> Option<Vec3> as RefractFn;
+    fn refract(i: Vec3, n: Vec3, eta_ratio: Float) -> Option<Vec3> as RefractFn, remote;
 }
 crate::judge::student_fns! { l02_ray_casting:
     fn hit_sphere_stable(ray: &Ray, center: Vec3, radius: Float, range: Interval) -> Option<Hit>;

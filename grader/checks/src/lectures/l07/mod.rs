@@ -35,7 +35,7 @@ declare_checks! {
 }
 
 #[cfg(feature = "l07")]
-mod common;
+pub(crate) mod common;
 #[cfg(feature = "l07")]
 mod fresnel;
 #[cfg(feature = "l07")]

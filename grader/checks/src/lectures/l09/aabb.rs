@@ -60,7 +60,7 @@ pub(super) fn area_cases(area: AreaFn) -> CheckResult {
         ("the infinite box", Aabb::INFINITE, Float::INFINITY),
     ];
     for (case, b, expected) in cases {
-        let got = area(&b);
+        let got = area(b.min, b.max);
         let cause = if b == Aabb::EMPTY {
             "the empty box has area 0: return 0 when is_empty() (its diagonal is −∞)"
         } else if got * 2.0 == expected {
@@ -413,14 +413,15 @@ mod tests {
         );
         caught(union_point_cases(|a, p| Aabb::new(a.min.min(p), a.max)), "grow the box");
         caught(
-            area_cases(|b| {
-                let d = b.diagonal();
+            area_cases(|min, max| {
+                let d = Aabb::new(min, max).diagonal();
                 2.0 * (d.x * d.y + d.y * d.z + d.z * d.x)
             }),
             "the empty box has area 0",
         );
         caught(
-            area_cases(|b| {
+            area_cases(|min, max| {
+                let b = Aabb::new(min, max);
                 if b.is_empty() {
                     return 0.0;
                 }

@@ -16,6 +16,7 @@ pub(super) use crate::judge::student;
 // a box crosses as its two corners.
 crate::judge::student_fns! { l09_acceleration:
     fn sah_split(bins: &[Bin; BINS]) -> Option<(usize, Float)> as SahFn;
+    fn aabb_surface_area(min: Vec3, max: Vec3) -> Float as AreaFn = Aabb::new(min, max).surface_area(), remote;
 }
 
 /// A box of the student's code, through `judge::student` as its corners.
@@ -38,12 +39,6 @@ pub(super) fn aabb_union(a: Aabb, b: Aabb) -> Aabb {
 #[track_caller]
 pub(super) fn aabb_union_point(a: Aabb, p: Vec3) -> Aabb {
     boxed(|| a.union_point(p))
-}
-
-/// `Aabb::surface_area`, through `judge::student`.
-#[track_caller]
-pub(super) fn aabb_surface_area(b: &Aabb) -> Float {
-    student(|| b.surface_area())
 }
 
 /// `Aabb::hit`, through `judge::student`.
@@ -72,7 +67,6 @@ pub(super) fn transform_bounds(local: &Aabb, world_from_object: &Mat4) -> Aabb {
 
 pub(super) type UnionFn = fn(Aabb, Aabb) -> Aabb;
 pub(super) type UnionPointFn = fn(Aabb, Vec3) -> Aabb;
-pub(super) type AreaFn = fn(&Aabb) -> Float;
 pub(super) type SlabFn = fn(&Aabb, &Ray, Vec3, Interval) -> Option<(Float, Float)>;
 pub(super) type SphereBoundsFn = fn(Vec3, Float) -> Aabb;
 pub(super) type TriangleBoundsFn = fn(&[Vec3; 3]) -> Aabb;

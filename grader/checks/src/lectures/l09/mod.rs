@@ -74,7 +74,7 @@ mod aabb;
 #[cfg(feature = "l09")]
 mod bounds;
 #[cfg(feature = "l09")]
-mod common;
+pub(crate) mod common;
 #[cfg(feature = "l09")]
 mod sah;
 #[cfg(feature = "l09")]
