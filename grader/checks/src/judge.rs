@@ -406,63 +406,6 @@ pub fn report_panic(message: &str, file: &str, line: u32) {
     }
 }
 
-/// Functions of a lecture crate, each wrapped so that its value goes through
-/// [`student`]: a lecture's checks import these instead of the crate's own,
-/// and their code reads as before. The signature is written once outside the
-/// lecture, here, and a row may add:
-///
-/// - `as NameFn`: the function's type, for the checks that take the function under test as
-///   an argument (the lecture's, or a planted mistake in the checks' tests);
-/// - `= EXPR`: what the row calls, where that is not the crate's function of the same name
-///   (a method: `Aabb::new(min, max).surface_area()`);
-/// - `, remote`: the call a hidden check makes of it, as a module of the same name (`remote.rs`:
-///   `name::call`, made by the subject, and `name::answer`, the subject's side).
-///
-/// ```ignore
-/// student_fns! { l02_ray_casting:
-///     fn hit_plane(ray: &Ray, normal: Vec3, offset: Float, range: Interval) -> Option<Hit> as PlaneFn;
-///     fn hit_sphere_stable(ray: &Ray, center: Vec3, radius: Float, range: Interval) -> Option<Hit>, remote;
-/// }
-/// ```
-macro_rules! student_fns {
-    ($krate:ident: $(
-        fn $name:ident($($arg:ident: $ty:ty),* $(,)?) -> $ret:ty $(as $alias:ident)? $(= $body:expr)? $(, $remote:ident)?;
-    )+) => {
-        $(
-            #[doc = concat!("`", stringify!($krate), "::", stringify!($name), "`, its value taken through `judge::student`.")]
-            #[track_caller]
-            pub(super) fn $name($($arg: $ty),*) -> $ret {
-                crate::judge::student(|| crate::judge::row_call!([$($body)?] $krate::$name($($arg),*)))
-            }
-            crate::judge::fn_type! { [$($alias)?] $name ($($ty),*) -> $ret }
-            crate::remote::remote_row! { [$($remote)?] $krate::$name($($arg: $ty),*) -> $ret = [$($body)?] }
-        )+
-    };
-}
-pub(crate) use student_fns;
-
-/// What a row of [`student_fns!`] calls: its `= EXPR`, or the crate's function of its name.
-macro_rules! row_call {
-    ([] $krate:ident::$name:ident($($arg:ident),*)) => {
-        $krate::$name($($arg),*)
-    };
-    ([$body:expr] $krate:ident::$name:ident($($arg:ident),*)) => {
-        $body
-    };
-}
-pub(crate) use row_call;
-
-/// The type a row of [`student_fns!`] names, `pub(super) type NameFn = fn(…) -> …;`, or nothing
-/// for a row without `as NameFn`.
-macro_rules! fn_type {
-    ([] $name:ident ($($ty:ty),*) -> $ret:ty) => {};
-    ([$alias:ident] $name:ident ($($ty:ty),*) -> $ret:ty) => {
-        #[doc = concat!("The type of `", stringify!($name), "` and of the mistakes planted in its place.")]
-        pub(super) type $alias = fn($($ty),*) -> $ret;
-    };
-}
-pub(crate) use fn_type;
-
 /// The protocol in one process: a judge and a subject on two threads, over a loopback
 /// connection, running the same check code (as the two processes do).
 #[cfg(test)]

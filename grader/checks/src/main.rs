@@ -24,6 +24,7 @@ mod lectures;
 mod path;
 mod platform;
 mod remote;
+mod rows;
 #[cfg(feature = "l03")]
 mod scene_objects;
 mod scenes;
@@ -129,7 +130,9 @@ fn main() -> ExitCode {
             subject_limits();
             token().and_then(|token| Role::subject(&channel, token)).and_then(|role| {
                 install_panic_hook(Box::leak(Box::new(VerdictTo::Judge)));
-                match judge::enter(role, || judge::serve_calls(remote::answer_encoded)) {
+                match judge::enter(role, || {
+                    judge::serve_calls(|call| remote::answer_encoded(lectures::ANSWERS, call))
+                }) {
                     Ok(served) => served.map(|()| ExitCode::SUCCESS),
                     Err(_) => Ok(no_verdict()),
                 }

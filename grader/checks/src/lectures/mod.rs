@@ -41,6 +41,25 @@ macro_rules! declare_checks {
     };
 }
 
+/// The calls of the student's code the subject answers for a hidden check (`remote.rs`), by
+/// name: the rows of `rows::student_fns!` marked `remote`.
+pub const ANSWERS: &[(&str, crate::remote::Answer)] = &[
+    #[cfg(feature = "l01")]
+    (l01::common::rotate_z::NAME, l01::common::rotate_z::answer),
+    #[cfg(feature = "l01")]
+    (l01::common::transform_vector::NAME, l01::common::transform_vector::answer),
+    #[cfg(feature = "l02")]
+    (l02::common::hit_sphere_stable::NAME, l02::common::hit_sphere_stable::answer),
+    #[cfg(feature = "l03")]
+    (l03::common::hit_slabs::NAME, l03::common::hit_slabs::answer),
+    #[cfg(feature = "l05")]
+    (l05::common::lambert::NAME, l05::common::lambert::answer),
+    #[cfg(feature = "l07")]
+    (l07::common::refract::NAME, l07::common::refract::answer),
+    #[cfg(feature = "l09")]
+    (l09::common::aabb_surface_area::NAME, l09::common::aabb_surface_area::answer),
+];
+
 // BEGIN GENERATED modules: written by `cargo run -p grader -- dev sync` from lectures/*/Cargo.toml; edit those, not this.
 pub mod l01;
 pub mod l02;

@@ -7,7 +7,7 @@ pub(super) use raylab::{Float, Mat4, Ray, Vec3, Vec4, radians};
 pub(super) use crate::check::{CheckResult, Failure, close3, ensure, fail, near3, num, vec3};
 
 // The student's functions, each value taken through `judge::student` (the lecture is `judged`).
-crate::judge::student_fns! { l01_transforms:
+crate::rows::student_fns! { l01_transforms:
     fn translate(t: Vec3) -> Mat4 as VecToMat;
     fn scale(s: Vec3) -> Mat4;
     fn rotate_x(angle: Float) -> Mat4 as AngleToMat;

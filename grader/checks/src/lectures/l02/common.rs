@@ -14,7 +14,7 @@ pub(super) use crate::check::{
 pub(super) const TOL: Float = 64.0 * Float::EPSILON;
 
 // The student's functions, each value taken through `judge::student` (the lecture is `judged`).
-crate::judge::student_fns! { l02_ray_casting:
+crate::rows::student_fns! { l02_ray_casting:
     fn hit_sphere_algebraic(ray: &Ray, center: Vec3, radius: Float, range: Interval) -> Option<Hit> as SphereFn;
     fn hit_sphere_geometric(ray: &Ray, center: Vec3, radius: Float, range: Interval) -> Option<Hit>;
     fn hit_sphere_stable(ray: &Ray, center: Vec3, radius: Float, range: Interval) -> Option<Hit>, remote;

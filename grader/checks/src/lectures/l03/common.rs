@@ -15,7 +15,7 @@ pub(super) use crate::check::{
 pub(super) use raylab_testing::exact::{Ratio, exact_span};
 
 // The student's functions, each value taken through `judge::student` (the lecture is `judged`).
-crate::judge::student_fns! { l03_polygons_triangles:
+crate::rows::student_fns! { l03_polygons_triangles:
     fn hit_slabs(ray: &Ray, min: Vec3, max: Vec3, range: Interval) -> Option<(Float, Float)> as SlabsFn, remote;
     fn hit_box(ray: &Ray, min: Vec3, max: Vec3, range: Interval) -> Option<Hit> as BoxFn;
     fn inside_crossings(polygon: &[Vec2], p: Vec2) -> bool as InsideFn;

@@ -11,7 +11,7 @@ pub(super) use crate::check::{
 };
 
 // The student's functions, each value taken through `judge::student` (the lecture is `judged`).
-crate::judge::student_fns! { l04_quadrics_transforms:
+crate::rows::student_fns! { l04_quadrics_transforms:
     fn slab_z_span(o_z: Float, d_z: Float) -> Option<(Float, Float)> as SpanFn;
     fn first_crossing(side: (Float, Float), caps: (Float, Float), range: Interval) -> Option<(Float, bool)> as CrossingFn;
     fn hit_cone(ray: &Ray, range: Interval) -> Option<Hit> as ShapeFn;

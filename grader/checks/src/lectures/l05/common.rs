@@ -7,7 +7,7 @@ pub(super) use raylab::{BLACK, Color, Float, Hit, Ray, Vec2, Vec3, WHITE, radian
 pub(super) use crate::check::{CheckResult, close, close3, ensure, num, v, vec3};
 
 // The student's functions, each value taken through `judge::student` (the lecture is `judged`).
-crate::judge::student_fns! { l05_shading:
+crate::rows::student_fns! { l05_shading:
     fn concentric_disk(u: Vec2) -> Vec2 as DiskFn;
     fn lambert(n: Vec3, l: Vec3) -> Float as LambertFn, remote;
     fn distance_falloff(attenuation: Attenuation, distance: Float) -> Float as FalloffFn;

@@ -9,7 +9,7 @@ pub(super) use raylab::stats::Counter;
 pub(super) use crate::judge::measured;
 
 // The student's functions, each value taken through `judge::student` (the lecture is `judged`).
-crate::judge::student_fns! { l06_shadows:
+crate::rows::student_fns! { l06_shadows:
     fn offset_origin(p: Vec3, n: Vec3, dir: Vec3, from: Vec3) -> Vec3 as OffsetFn;
     fn offset_origin_fixed_t(p: Vec3, n: Vec3, dir: Vec3, from: Vec3) -> Vec3;
     fn offset_origin_fixed_normal(p: Vec3, n: Vec3, dir: Vec3, from: Vec3) -> Vec3;

@@ -26,13 +26,13 @@ pub(super) fn show(t: &Option<Vec3>) -> String {
 }
 
 // The student's functions, each value taken through `judge::student` (the lecture is `judged`).
-crate::judge::student_fns! { l07_reflection_refraction:
+crate::rows::student_fns! { l07_reflection_refraction:
     fn schlick(cos_i: Float, eta_i: Float, eta_t: Float) -> Float as FresnelFn;
     fn fresnel_dielectric(cos_i: Float, eta_i: Float, eta_t: Float) -> Float;
     fn mirror_direction(dir: Vec3, n: Vec3) -> Vec3 as MirrorFn;
     fn refract(i: Vec3, n: Vec3, eta_ratio: Float) -> Option<Vec3> as RefractFn, remote;
 }
-crate::judge::student_fns! { l02_ray_casting:
+crate::rows::student_fns! { l02_ray_casting:
     fn hit_sphere_stable(ray: &Ray, center: Vec3, radius: Float, range: Interval) -> Option<Hit>;
 }
 

@@ -8,7 +8,7 @@ pub(super) use raylab::stats::{Counter, RayStats};
 pub(super) use crate::judge::{measured, student};
 
 // The student's functions, each value taken through `judge::student` (the lecture is `judged`).
-crate::judge::student_fns! { l08_ray_tree:
+crate::rows::student_fns! { l08_ray_tree:
     fn trace(world: &World, ray: &Ray, depth: u32, weight: Float, settings: &TraceSettings) -> Color as TraceFn;
     fn render(world: &World, camera: &Camera, width: u32, height: u32, settings: &TraceSettings)
         -> (Image, RayStats) as RenderFn;

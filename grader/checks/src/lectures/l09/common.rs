@@ -14,7 +14,7 @@ pub(super) use crate::judge::student;
 
 // The student's functions, each value taken through `judge::student` (the lecture is `judged`);
 // a box crosses as its two corners.
-crate::judge::student_fns! { l09_acceleration:
+crate::rows::student_fns! { l09_acceleration:
     fn sah_split(bins: &[Bin; BINS]) -> Option<(usize, Float)> as SahFn;
     fn aabb_surface_area(min: Vec3, max: Vec3) -> Float as AreaFn = Aabb::new(min, max).surface_area(), remote;
 }

@@ -14,7 +14,7 @@ pub(super) use raylab::{Color, Float, Image, Scene, Vec2, Vec3};
 pub(super) use crate::check::{CheckResult, Failure, ensure, fail, num, vec3};
 
 // The student's functions, each value taken through `judge::student` (the lecture is `judged`).
-crate::judge::student_fns! { l10_textures_sampling:
+crate::rows::student_fns! { l10_textures_sampling:
     fn sphere_uv(p: Vec3) -> Vec2 as SphereUvFn;
     fn plane_uv(p: Vec3, origin: Vec3, u_axis: Vec3, v_axis: Vec3) -> Vec2 as PlaneUvFn;
     fn triangle_uv(uvs: &[Vec2; 3], beta: Float, gamma: Float) -> Vec2 as TriangleUvFn;
