@@ -11,6 +11,7 @@
 //! any SOLUTION lines copied into it). It depends on the kit only and is not
 //! part of the kit's API: nothing a student writes calls it.
 
+pub mod boxes;
 pub mod exact;
 pub mod meshes;
 pub mod roots;
