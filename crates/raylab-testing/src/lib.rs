@@ -14,6 +14,7 @@
 pub mod boxes;
 pub mod exact;
 pub mod meshes;
+pub mod polygons;
 pub mod roots;
 pub mod scenes;
 
