@@ -134,6 +134,23 @@ pub fn tile_in_glass() -> (Scene, Ray) {
     (s, Ray::new(Vec3::ZERO, -Vec3::Z))
 }
 
+/// A mirror ball, a glass ball and a matte one over a floor, lit, seen from (0, 0, 5): a
+/// scene with every kind of ray (lecture 08's render).
+pub fn three_balls() -> Scene {
+    scene(
+        vec![
+            plane(Vec3::Y, -1.0, 0),
+            sphere(v(-1.2, 0.0, 0.0), 0.8, 1),
+            sphere(v(0.0, 0.0, 0.5), 0.6, 2),
+            sphere(v(1.2, 0.0, 0.0), 0.8, 3),
+        ],
+        vec![matte(v(0.8, 0.8, 0.6)), mirror(0.8), glass(1.5), matte(v(0.2, 0.4, 0.9))],
+        vec![directional(v(-1.0, 2.0, 1.0).normalize(), Color::ONE)],
+        v(0.3, 0.4, 0.6),
+        Color::splat(0.1),
+    )
+}
+
 fn scene_of(camera: Camera, size: (u32, u32), objects: Vec<Object>, lights: Vec<Light>) -> Scene {
     Scene {
         camera,
