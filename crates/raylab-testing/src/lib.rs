@@ -13,6 +13,7 @@
 
 pub mod boxes;
 pub mod exact;
+pub mod lights;
 pub mod meshes;
 pub mod polygons;
 pub mod roots;
