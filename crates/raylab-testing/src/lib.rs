@@ -16,6 +16,7 @@ pub mod exact;
 pub mod lights;
 pub mod meshes;
 pub mod polygons;
+pub mod refraction;
 pub mod roots;
 pub mod scenes;
 
