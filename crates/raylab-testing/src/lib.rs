@@ -15,6 +15,7 @@ pub mod boxes;
 pub mod exact;
 pub mod lights;
 pub mod meshes;
+pub mod offsets;
 pub mod polygons;
 pub mod refraction;
 pub mod roots;
