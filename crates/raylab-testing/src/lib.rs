@@ -20,6 +20,7 @@ pub mod polygons;
 pub mod refraction;
 pub mod roots;
 pub mod scenes;
+pub mod uv;
 
 use raylab::{Float, Ray, Vec3};
 
