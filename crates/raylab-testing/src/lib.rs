@@ -3,7 +3,9 @@
 //! computed wider, independent references (sphere roots by Newton's method in
 //! double-double arithmetic, ray–box by exact integer arithmetic), and the
 //! fixtures both build (test scenes, a closed wobbly mesh and the rays that
-//! find its leaks).
+//! find its leaks, polygons, rays against boxes, lights, refraction at the
+//! edge of total internal reflection, shadow-ray offsets, sphere uvs): a
+//! scenario a lecture's test shows and a check grades is written once, here.
 //!
 //! Its place: the lectures use it as a dev-dependency, the checks as a
 //! dependency, and the handout ships it, so it holds no exercise solved: its
