@@ -3,7 +3,9 @@
 //! computed wider, independent references (sphere roots by Newton's method in
 //! double-double arithmetic, ray–box by exact integer arithmetic), and the
 //! fixtures both build (test scenes, a closed wobbly mesh and the rays that
-//! find its leaks).
+//! find its leaks, polygons, rays against boxes, lights, refraction at the
+//! edge of total internal reflection, shadow-ray offsets, sphere uvs): a
+//! scenario a lecture's test shows and a check grades is written once, here.
 //!
 //! Its place: the lectures use it as a dev-dependency, the checks as a
 //! dependency, and the handout ships it, so it holds no exercise solved: its
@@ -11,10 +13,16 @@
 //! any SOLUTION lines copied into it). It depends on the kit only and is not
 //! part of the kit's API: nothing a student writes calls it.
 
+pub mod boxes;
 pub mod exact;
+pub mod lights;
 pub mod meshes;
+pub mod offsets;
+pub mod polygons;
+pub mod refraction;
 pub mod roots;
 pub mod scenes;
+pub mod uv;
 
 use raylab::{Float, Ray, Vec3};
 

@@ -1,6 +1,6 @@
 //! A closed mesh with no edge on nice coordinates, and the rays that find a
-//! leak in it: lecture 03's watertightness tests and checks, and the
-//! triangle trade-offs.
+//! leak in a closed mesh: lecture 03's watertightness tests and checks,
+//! lecture 09's shared-edge tests and checks, and the triangle trade-offs.
 
 use raylab::random::Rng;
 use raylab::scene::Mesh;
@@ -23,21 +23,27 @@ pub fn wobbly_octahedron(rng: &mut Rng) -> Mesh {
     Mesh { positions, triangles, ..Mesh::default() }
 }
 
-/// Rays from `origin` (inside the mesh) toward every vertex and toward three
-/// points of every edge (fractions 0.5, 0.1 and 0.7 of the way).
-pub fn edge_and_vertex_rays(mesh: &Mesh, origin: Vec3) -> Vec<Ray> {
-    let mut rays: Vec<Ray> = mesh.positions.iter().map(|&p| Ray::new(origin, p - origin)).collect();
+/// The points a leak would show at: every vertex, then three points of every
+/// edge (fractions 0.5, 0.1 and 0.7 of the way), each edge once.
+pub fn edge_and_vertex_targets(mesh: &Mesh) -> Vec<Vec3> {
+    let mut targets = mesh.positions.clone();
     for triangle in &mesh.triangles {
         for k in 0..3 {
             let (i, j) = (triangle[k], triangle[(k + 1) % 3]);
             // Each edge once: it appears as i→j in one face and j→i in the other.
             if i < j {
                 let (p, q) = (mesh.positions[i as usize], mesh.positions[j as usize]);
-                rays.extend([0.5, 0.1, 0.7].map(|s| Ray::new(origin, p.lerp(q, s) - origin)));
+                targets.extend([0.5, 0.1, 0.7].map(|s| p.lerp(q, s)));
             }
         }
     }
-    rays
+    targets
+}
+
+/// Rays from `origin` (inside the mesh) toward every vertex and toward three
+/// points of every edge ([`edge_and_vertex_targets`]).
+pub fn edge_and_vertex_rays(mesh: &Mesh, origin: Vec3) -> Vec<Ray> {
+    edge_and_vertex_targets(mesh).into_iter().map(|p| Ray::new(origin, p - origin)).collect()
 }
 
 #[cfg(test)]

@@ -117,6 +117,40 @@ pub fn block_with_tile(degrees: Float) -> (Scene, Ray) {
     (s, Ray::new(v(0.0, -0.5, 0.0), v(a.sin(), a.cos(), 0.0)))
 }
 
+/// Head-on into a glass block (z from −10 to −1, η = 1.5, k_t = 1, no mirror of its own)
+/// holding a green matte tile (z from −6 to −5, x and y from −1 to 1), no lights, ambient
+/// ½, magenta sky, and the ray from the origin along −z: Fresnel's R at normal incidence.
+pub fn tile_in_glass() -> (Scene, Ray) {
+    let s = scene(
+        vec![
+            cuboid(v(-5.0, -5.0, -10.0), v(5.0, 5.0, -1.0), 0),
+            cuboid(v(-1.0, -1.0, -6.0), v(1.0, 1.0, -5.0), 1),
+        ],
+        vec![glass(1.5), matte(v(0.2, 0.6, 0.4))],
+        vec![],
+        v(1.0, 0.0, 1.0),
+        Color::splat(0.5),
+    );
+    (s, Ray::new(Vec3::ZERO, -Vec3::Z))
+}
+
+/// A mirror ball, a glass ball and a matte one over a floor, lit, seen from (0, 0, 5): a
+/// scene with every kind of ray (lecture 08's render).
+pub fn three_balls() -> Scene {
+    scene(
+        vec![
+            plane(Vec3::Y, -1.0, 0),
+            sphere(v(-1.2, 0.0, 0.0), 0.8, 1),
+            sphere(v(0.0, 0.0, 0.5), 0.6, 2),
+            sphere(v(1.2, 0.0, 0.0), 0.8, 3),
+        ],
+        vec![matte(v(0.8, 0.8, 0.6)), mirror(0.8), glass(1.5), matte(v(0.2, 0.4, 0.9))],
+        vec![directional(v(-1.0, 2.0, 1.0).normalize(), Color::ONE)],
+        v(0.3, 0.4, 0.6),
+        Color::splat(0.1),
+    )
+}
+
 fn scene_of(camera: Camera, size: (u32, u32), objects: Vec<Object>, lights: Vec<Light>) -> Scene {
     Scene {
         camera,

@@ -148,33 +148,10 @@ mod tests {
     use raylab::Float;
     use raylab::math::consts::PI;
     use raylab::random::Rng;
+    use raylab_testing::polygons::{on_plane, pentagram, square, square_in_plane, u_shape};
 
     fn v2(points: &[[Float; 2]]) -> Vec<Vec2> {
         points.iter().map(|&p| Vec2::from_array(p)).collect()
-    }
-
-    /// The square [0, 2]², counter-clockwise.
-    fn square() -> Vec<Vec2> {
-        v2(&[[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]])
-    }
-
-    /// A "U", counter-clockwise: two arms x ∈ [0, 1] and [2, 3] rising to y = 3
-    /// from a base y ∈ [0, 1]; the notch x ∈ (1, 2), y ∈ (1, 3) is outside.
-    fn u_shape() -> Vec<Vec2> {
-        v2(&[[0.0, 0.0], [3.0, 0.0], [3.0, 3.0], [2.0, 3.0], [2.0, 1.0], [1.0, 1.0], [1.0, 3.0], [0.0, 3.0]])
-    }
-
-    /// The pentagram {5/2}: the regular pentagon's vertices (angles 90° + 72°k,
-    /// radius 1) taken in the order 0, 2, 4, 1, 3, counter-clockwise. It winds
-    /// twice around the centre (the inner pentagon) and once around each tip.
-    fn pentagram() -> Vec<Vec2> {
-        [0, 2, 4, 1, 3]
-            .iter()
-            .map(|&k| {
-                let a = PI / 2.0 + 2.0 * PI * k as Float / 5.0;
-                Vec2::new(a.cos(), a.sin())
-            })
-            .collect()
     }
 
     #[test]
@@ -292,33 +269,12 @@ mod tests {
         assert_eq!(newell_normal(&[Vec3::ZERO, Vec3::X, 2.0 * Vec3::X]), Vec3::ZERO);
     }
 
-    /// The square [0, 2]² placed in 3D with `axis` as its normal axis, at
-    /// coordinate 1 along it, counter-clockwise seen from +axis.
-    fn square_in_plane(axis: usize) -> Vec<Vec3> {
-        square()
-            .iter()
-            .map(|v| {
-                let mut p = Vec3::ZERO;
-                p[axis] = 1.0;
-                p[(axis + 1) % 3] = v.x;
-                p[(axis + 2) % 3] = v.y;
-                p
-            })
-            .collect()
-    }
-
     #[test]
     fn polygon_in_3d_for_each_dominant_axis() {
         for axis in 0..3 {
             let quad = square_in_plane(axis);
-            let mut normal = Vec3::ZERO;
-            normal[axis] = 1.0;
-            let at = |u: Float, v: Float| {
-                let mut p = normal;
-                p[(axis + 1) % 3] = u;
-                p[(axis + 2) % 3] = v;
-                p
-            };
+            let normal = Vec3::AXES[axis];
+            let at = |u: Float, v: Float| on_plane(axis, u, v);
             // From 4 units in front, slightly oblique, toward (0.5, 1.5) of the square: t = 1.
             let target = at(0.5, 1.5);
             let r =

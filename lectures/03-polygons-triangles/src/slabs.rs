@@ -140,6 +140,7 @@ mod tests {
     use super::*;
     use approx::assert_relative_eq;
     use raylab::random::Rng;
+    use raylab_testing::boxes::{FACE_PLANE_RAYS, GridRay, grid_ray, sixteenths};
     use raylab_testing::exact::exact_hits;
     use raylab_testing::ray;
 
@@ -207,13 +208,7 @@ mod tests {
         assert_eq!(hit_slabs(&ray([-3.0, 0.0, -1.5], [1.0, 0.0, -0.0]), LO, HI, Interval::POSITIVE), None);
         // Origins exactly on a face plane (y = 1, y = −1) or on an edge line (y = z = 1),
         // with +0 and −0 direction components: 0·∞ = NaN must count as inside.
-        for (o, d) in [
-            ([-3.0, 1.0, 0.0], [1.0, 0.0, 0.0]),
-            ([-3.0, 1.0, 0.0], [1.0, -0.0, 0.0]),
-            ([-3.0, -1.0, 0.0], [1.0, -0.0, -0.0]),
-            ([-3.0, 1.0, 1.0], [1.0, -0.0, 0.0]),
-            ([3.0, -1.0, -1.0], [-1.0, 0.0, -0.0]),
-        ] {
+        for (o, d) in FACE_PLANE_RAYS {
             let (t0, t1) = hit_slabs(&ray(o, d), LO, HI, Interval::POSITIVE).expect("ray along a face");
             assert_eq!(t0, 2.0, "{o:?} {d:?}");
             assert_exit(t1, 4.0);
@@ -287,43 +282,18 @@ mod tests {
     fn no_false_misses_against_an_exact_reference() {
         // Coordinates are integers/16, exact in f32 and f64, so the reference sees
         // the very numbers the routine sees; 1/d and the products still round.
-        const SCALE: Float = 1.0 / 16.0;
-        let to_vec = |v: [i64; 3]| Vec3::new(v[0] as Float, v[1] as Float, v[2] as Float) * SCALE;
         let mut rng = Rng::new(3);
         let (mut hits, mut false_hits, mut boundary) = (0, 0, 0);
         for n in 0..20_000 {
-            let mut lo = [0i64; 3];
-            let mut hi = [0i64; 3];
-            for i in 0..3 {
-                lo[i] = rng.int(-40, 40);
-                // One box in eight is flat along this axis.
-                hi[i] = if rng.int(0, 7) == 0 { lo[i] } else { lo[i] + rng.int(1, 40) };
-            }
-            let o: [i64; 3] = std::array::from_fn(|_| rng.int(-100, 100));
-            let d: [i64; 3] = if n % 2 == 0 {
-                // A random direction, one component in four exactly zero.
-                std::array::from_fn(|_| if rng.int(0, 3) == 0 { 0 } else { rng.int(-60, 60) })
-            } else {
-                // Aimed exactly at the box's boundary: a face, an edge or a corner.
-                boundary += 1;
-                let target: [i64; 3] = std::array::from_fn(|i| match rng.int(0, 2) {
-                    0 => lo[i],
-                    1 => hi[i],
-                    _ => rng.int(lo[i], hi[i]),
-                });
-                let on_boundary = (0..3).any(|i| target[i] == lo[i] || target[i] == hi[i]);
-                let mut d = [target[0] - o[0], target[1] - o[1], target[2] - o[2]];
-                if !on_boundary {
-                    d[0] = hi[0] - o[0]; // make it a point of the max-x face
-                    d[1] = target[1] - o[1];
-                }
-                d
-            };
+            // Half of them aimed exactly at the box's boundary: a face, an edge or a corner.
+            let aimed = n % 2 == 1;
+            boundary += aimed as u32;
+            let GridRay { lo, hi, o, d } = grid_ray(&mut rng, aimed);
             if d == [0; 3] {
                 continue;
             }
-            let r = Ray::new(to_vec(o), to_vec(d));
-            let found = hit_slabs(&r, to_vec(lo), to_vec(hi), Interval::POSITIVE);
+            let r = Ray::new(sixteenths(o), sixteenths(d));
+            let found = hit_slabs(&r, sixteenths(lo), sixteenths(hi), Interval::POSITIVE);
             if let Some((t0, t1)) = found {
                 assert!(!t0.is_nan() && !t1.is_nan() && t0 <= t1, "{t0} {t1} for {o:?} {d:?}");
             }

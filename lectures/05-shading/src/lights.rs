@@ -133,6 +133,7 @@ mod tests {
     use super::*;
     use approx::assert_abs_diff_eq;
     use raylab::radians;
+    use raylab_testing::lights::{FALLOFF_AT_2, floor_at, spot_down};
 
     fn light(kind: LightKind) -> Light {
         Light { color: Color::new(1.0, 0.5, 0.25), shadows: true, kind }
@@ -147,18 +148,7 @@ mod tests {
 
     /// A spot at (0, 1, 0) shining straight down, no attenuation.
     fn spot(inner_degrees: Float, outer_degrees: Float) -> Light {
-        light(LightKind::Spot {
-            position: Vec3::Y,
-            direction: -Vec3::Y,
-            inner: radians(inner_degrees),
-            outer: radians(outer_degrees),
-            attenuation: Attenuation::default(),
-        })
-    }
-
-    /// The point of the floor y = 0 seen from the spot at (0, 1, 0) at `degrees` off its axis.
-    fn floor_at(degrees: Float) -> Vec3 {
-        Vec3::new(radians(degrees).tan(), 0.0, 0.0)
+        light(spot_down(inner_degrees, outer_degrees))
     }
 
     #[test]
@@ -175,16 +165,8 @@ mod tests {
     #[test]
     fn point_light_attenuation_at_distance_2_by_hand() {
         // The light is 2 straight above the point (exact in floats): L = +y, d = 2, and
-        // 1/(c + 2l + 4q) by hand: (1,0,0) → 1, (0,1,0) → ½, (0,0,1) → ¼,
-        // (1,1,1) → 1/7, (½,¼,⅛) → 1/(½ + ½ + ½) = ⅔. One division: 2ε relative.
-        let cases = [
-            ((1.0, 0.0, 0.0), 1.0),
-            ((0.0, 1.0, 0.0), 0.5),
-            ((0.0, 0.0, 1.0), 0.25),
-            ((1.0, 1.0, 1.0), 1.0 / 7.0),
-            ((0.5, 0.25, 0.125), 2.0 / 3.0),
-        ];
-        for ((c, l, q), expected) in cases {
+        // 1/(c + 2l + 4q) by hand (FALLOFF_AT_2). One division: 2ε relative.
+        for ((c, l, q), expected) in FALLOFF_AT_2 {
             let light = point_light(Vec3::new(1.0, 2.0, 3.0), c, l, q);
             let s = illuminate(&light, Vec3::new(1.0, 0.0, 3.0));
             assert_eq!((s.direction, s.distance), (Vec3::Y, 2.0), "({c}, {l}, {q})");

@@ -138,6 +138,7 @@ mod tests {
     use raylab::random::Rng;
     use raylab::scene::Shape;
     use raylab::{Hit, Intersector, Interval, Ray, WHITE};
+    use raylab_testing::offsets::{OffsetCase, random_offset_cases};
     use raylab_testing::v;
 
     type Offset = fn(Vec3, Vec3, Vec3, Vec3) -> Vec3;
@@ -248,20 +249,12 @@ mod tests {
         // the unit n carries at least 1/√3: at least 4.6 − ½ ulp; assert ≥ 4. The ray's origin
         // is as far out as p, 100× farther (a distant eye) or at the world origin. (Measured
         // in the max norm, which does not underflow at 10⁻³⁰ as the length would.)
-        let mut rng = Rng::new(0x0ff5e7);
         let mut largest: Float = 0.0;
-        for scale in [1e-30, 1e-4, 1.0, 7.0, 1e4, 1e5, 1e20] {
-            for from_scale in [0.0, 1.0, 100.0] {
-                for _ in 0..1000 {
-                    let p = rng.in_ball(scale);
-                    let from = rng.in_ball(scale * from_scale);
-                    let n = rng.unit_vector();
-                    let moved = (offset_origin(p, n, rng.unit_vector(), from) - p).abs().max_element();
-                    let in_ulp = moved / ulp(p.abs().max_element().max(from.abs().max_element()));
-                    largest = largest.max(in_ulp);
-                    assert!((4.0..=97.0).contains(&in_ulp), "p = {p}, from = {from}, n = {n}: {in_ulp} ulp");
-                }
-            }
+        for OffsetCase { p, n, dir, from } in random_offset_cases(1000) {
+            let moved = (offset_origin(p, n, dir, from) - p).abs().max_element();
+            let in_ulp = moved / ulp(p.abs().max_element().max(from.abs().max_element()));
+            largest = largest.max(in_ulp);
+            assert!((4.0..=97.0).contains(&in_ulp), "p = {p}, from = {from}, n = {n}: {in_ulp} ulp");
         }
         println!("offset_origin: at most {largest:.0} ulp of the largest coordinate of p and from");
     }

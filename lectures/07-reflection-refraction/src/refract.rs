@@ -102,6 +102,7 @@ pub fn refract(i: Vec3, n: Vec3, eta_ratio: Float) -> Option<Vec3> {
 mod tests {
     use super::*;
     use raylab::Ray;
+    use raylab_testing::refraction::{ExactlyOne, sin2_t_exactly_one};
     use raylab_testing::{v, wide, wide3};
 
     const EPS: Float = Float::EPSILON;
@@ -219,24 +220,14 @@ mod tests {
         // θ_t = 90°: no transmitted ray, so None (a `>` test would send a ray along the surface).
         // The float just below such an η gives sin²θ_t < 1 and a ray.
         let mut cases = 0;
-        for k in 1..64 {
-            let cos_i = k as Float / 64.0;
-            let sin2_i = 1.0 - cos_i * cos_i;
-            // i·n = −cos θ_i exactly (n = +y), whatever the rounding of the x component.
-            let i = v(sin2_i.sqrt(), -cos_i, 0.0);
-            let nearest = 1.0 / sin2_i.sqrt();
-            for step in -8i64..=8 {
-                let eta = Float::from_bits((nearest.to_bits() as i64 + step) as _);
-                if eta * eta * sin2_i != 1.0 {
-                    continue;
-                }
-                cases += 1;
-                assert_eq!(refract(i, Vec3::Y, eta), None, "cos θ_i = {k}/64, η = {eta}: sin²θ_t = 1");
-                let below = Float::from_bits(eta.to_bits() - 1);
-                if below * below * sin2_i < 1.0 {
-                    let t = refract(i, Vec3::Y, below).expect("sin²θ_t < 1 refracts");
-                    assert!(t.is_finite() && t.dot(Vec3::Y) < 0.0, "η = {below}: t = {t}");
-                }
+        // i·n = −cos θ_i exactly (n = +y), whatever the rounding of the x component.
+        for ExactlyOne { k, sin2_i, i, eta } in sin2_t_exactly_one() {
+            cases += 1;
+            assert_eq!(refract(i, Vec3::Y, eta), None, "cos θ_i = {k}/64, η = {eta}: sin²θ_t = 1");
+            let below = Float::from_bits(eta.to_bits() - 1);
+            if below * below * sin2_i < 1.0 {
+                let t = refract(i, Vec3::Y, below).expect("sin²θ_t < 1 refracts");
+                assert!(t.is_finite() && t.dot(Vec3::Y) < 0.0, "η = {below}: t = {t}");
             }
         }
         println!("sin²θ_t rounds to exactly 1 in {cases} cases");

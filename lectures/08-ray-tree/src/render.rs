@@ -46,26 +46,15 @@ pub fn render_scene(scene: &Scene, settings: &TraceSettings) -> Result<(Image, R
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::testing::{directional, glass, matte, mirror, plane, scene, sphere, v};
+    use crate::testing::{directional, glass, matte, plane, scene, sphere, v};
     use raylab::scene as description;
     use raylab::stats::measure;
     use raylab::{Color, Float, Vec3};
 
-    /// A mirror ball, a glass ball and a matte one over a floor, for the 40 × 30 camera of
+    /// The mirror, glass and matte balls over a floor, for the 40 × 30 camera of
     /// `testing::scene` (eye (0, 0, 5), looking at the origin).
     fn three_balls() -> Scene {
-        scene(
-            vec![
-                plane(Vec3::Y, -1.0, 0),
-                sphere(v(-1.2, 0.0, 0.0), 0.8, 1),
-                sphere(v(0.0, 0.0, 0.5), 0.6, 2),
-                sphere(v(1.2, 0.0, 0.0), 0.8, 3),
-            ],
-            vec![matte(v(0.8, 0.8, 0.6)), mirror(0.8), glass(1.5), matte(v(0.2, 0.4, 0.9))],
-            vec![directional(v(-1.0, 2.0, 1.0).normalize(), Color::ONE)],
-            v(0.3, 0.4, 0.6),
-            Color::splat(0.1),
-        )
+        Scene { width: 40, height: 30, ..raylab_testing::scenes::three_balls() }
     }
 
     #[test]

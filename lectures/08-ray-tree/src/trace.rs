@@ -195,7 +195,7 @@ mod tests {
     use raylab::scene::{Attenuation, Light, LightKind, Material, Specular};
     use raylab::stats::RayStats;
     use raylab::{Intersector, WHITE};
-    use raylab_testing::scenes::{block_with_tile, facing_mirrors};
+    use raylab_testing::scenes::{block_with_tile, facing_mirrors, tile_in_glass};
 
     const BACKGROUND: Color = Color::new(0.2, 0.3, 0.4);
     const AMBIENT: Color = Color::new(0.1, 0.2, 0.3);
@@ -427,19 +427,9 @@ mod tests {
         // ray (weight 0.04) sees the background B behind the eye, the transmitted one (0.96)
         // the tile, k_d⊙I_a. Without Fresnel: only the transmitted ray, weight 1.
         // Tolerance: R from 07 within a few ε, times values ≤ 1: 8ε.
-        let background = v(1.0, 0.0, 1.0);
+        let (s, ray) = tile_in_glass();
+        let background = s.background;
         let tile = v(0.2, 0.6, 0.4) * 0.5;
-        let s = scene(
-            vec![
-                cuboid(v(-5.0, -5.0, -10.0), v(5.0, 5.0, -1.0), 0),
-                cuboid(v(-1.0, -1.0, -6.0), v(1.0, 1.0, -5.0), 1),
-            ],
-            vec![glass(1.5), matte(v(0.2, 0.6, 0.4))],
-            vec![],
-            background,
-            Color::splat(0.5),
-        );
-        let ray = Ray::new(Vec3::ZERO, -Vec3::Z);
         let settings = TraceSettings { max_depth: 1, ..TraceSettings::default() };
         let (plain, stats) = trace_counted(&s, &ray, &settings);
         assert_eq!((plain, secondary(&stats)), (tile, (0, 1, 0)));

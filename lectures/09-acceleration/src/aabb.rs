@@ -177,6 +177,7 @@ mod tests {
     use super::*;
     use crate::testing::Rng;
     use l03_polygons_triangles::hit_slabs;
+    use raylab_testing::boxes::FACE_PLANE_RAYS;
     use raylab_testing::ray;
 
     const EPS: Float = Float::EPSILON;
@@ -274,13 +275,7 @@ mod tests {
     fn axis_parallel_rays_starting_on_a_face_plane_are_inside_that_slab() {
         // Origins exactly on the planes y = ±1 (and on an edge line) moving along ±x with
         // ±0 in the other components: 0·∞ = NaN must count as inside; x span [2, 4].
-        for (o, d) in [
-            ([-3.0, 1.0, 0.0], [1.0, 0.0, 0.0]),
-            ([-3.0, 1.0, 0.0], [1.0, -0.0, 0.0]),
-            ([-3.0, -1.0, 0.0], [1.0, -0.0, -0.0]),
-            ([-3.0, 1.0, 1.0], [1.0, -0.0, 0.0]),
-            ([3.0, -1.0, -1.0], [-1.0, 0.0, -0.0]),
-        ] {
+        for (o, d) in FACE_PLANE_RAYS {
             let (t0, t1) = hit(&cube(), &ray(o, d), Interval::POSITIVE).expect("a ray along a face");
             assert_entry(t0, 2.0);
             assert_exit(t1, 4.0);

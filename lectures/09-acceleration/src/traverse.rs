@@ -430,6 +430,7 @@ mod tests {
     use raylab::scene::{Mesh, Object, Shape};
     use raylab::stats::{Counter, measure};
     use raylab::{Float, Vec2};
+    use raylab_testing::meshes::edge_and_vertex_targets;
     use std::sync::Arc;
 
     /// A scene's tree as built, and the same tree traversed four-wide: where
@@ -510,19 +511,10 @@ mod tests {
     type Origin = fn(Vec3) -> Vec3;
 
     /// Rays toward every vertex of `mesh` and toward three points of every edge
-    /// (its midpoint, 0.1 and 0.7 along), each from `origin(target)`, inside.
+    /// (its midpoint, 0.1 and 0.7 along: `edge_and_vertex_targets`), each from
+    /// `origin(target)`, inside.
     fn edge_and_vertex_rays(mesh: &Mesh, origin: Origin) -> Vec<Ray> {
-        let mut targets = mesh.positions.clone();
-        for tri in &mesh.triangles {
-            for k in 0..3 {
-                let (i, j) = (tri[k], tri[(k + 1) % 3]);
-                if i < j {
-                    let (p, q) = (mesh.positions[i as usize], mesh.positions[j as usize]);
-                    targets.extend([0.5, 0.1, 0.7].map(|s| p.lerp(q, s)));
-                }
-            }
-        }
-        targets.into_iter().map(|p| Ray::new(origin(p), p - origin(p))).collect()
+        edge_and_vertex_targets(mesh).into_iter().map(|p| Ray::new(origin(p), p - origin(p))).collect()
     }
 
     #[test]

@@ -96,6 +96,7 @@ pub fn triangle_uv(uvs: &[Vec2; 3], beta: Float, gamma: Float) -> Vec2 {
 mod tests {
     use super::*;
     use approx::assert_abs_diff_eq;
+    use raylab_testing::uv::sphere_grid;
 
     const EPS: Float = Float::EPSILON;
 
@@ -136,14 +137,9 @@ mod tests {
         // λ = π(v − ½), p = (cos λ cos φ, sin λ, −cos λ sin φ). Every (u, v) of a 9 × 9 grid
         // inside the seam and the poles comes back within 8ε (sin, cos, atan2 and the
         // products, a few ulp each); scaling p by 3 or 1/7 changes nothing beyond that.
-        for i in 1..10 {
-            for j in 1..10 {
-                let (u, v) = (i as Float / 10.0, j as Float / 10.0);
-                let (phi, lambda) = (TAU * (u - 0.5), PI * (v - 0.5));
-                let p = v3(lambda.cos() * phi.cos(), lambda.sin(), -lambda.cos() * phi.sin());
-                for s in [1.0, 3.0, 1.0 / 7.0] {
-                    assert_abs_diff_eq!(sphere_uv(s * p), Vec2::new(u, v), epsilon = 8.0 * EPS);
-                }
+        for (uv, p) in sphere_grid() {
+            for s in [1.0, 3.0, 1.0 / 7.0] {
+                assert_abs_diff_eq!(sphere_uv(s * p), uv, epsilon = 8.0 * EPS);
             }
         }
     }

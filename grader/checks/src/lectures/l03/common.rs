@@ -12,6 +12,7 @@ pub(super) use crate::check::{
     CheckResult, Failure, close, close3, ensure, fail, maybe, near3, num, ray, show_hit, show_ray, show_span,
     vec3,
 };
+pub(super) use raylab_testing::boxes::{GridRay, grid_ray, sixteenths};
 pub(super) use raylab_testing::exact::{Ratio, exact_span};
 
 // The student's functions, each value taken through `judge::student` (the lecture is `judged`).

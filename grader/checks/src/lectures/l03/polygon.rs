@@ -1,31 +1,12 @@
 //! The checks of `polygon.rs`: inside_crossings, winding_number, newell_normal, hit_polygon.
 
 use super::common::*;
+use raylab_testing::polygons::{on_plane, pentagram, square, square_in_plane, u_shape};
 
 // ---- polygons --------------------------------------------------------------
 
 pub(super) fn v2(points: &[[Float; 2]]) -> Vec<Vec2> {
     points.iter().map(|&p| Vec2::from_array(p)).collect()
-}
-
-pub(super) fn square() -> Vec<Vec2> {
-    v2(&[[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]])
-}
-
-/// A "U" with the notch x ∈ (1, 2), y ∈ (1, 3) outside.
-pub(super) fn u_shape() -> Vec<Vec2> {
-    v2(&[[0.0, 0.0], [3.0, 0.0], [3.0, 3.0], [2.0, 3.0], [2.0, 1.0], [1.0, 1.0], [1.0, 3.0], [0.0, 3.0]])
-}
-
-/// The pentagram {5/2}, counter-clockwise: vertices 90° + 72°k taken 0, 2, 4, 1, 3.
-pub(super) fn pentagram() -> Vec<Vec2> {
-    [0, 2, 4, 1, 3]
-        .iter()
-        .map(|&k| {
-            let a = PI / 2.0 + 2.0 * PI * k as Float / 5.0;
-            Vec2::new(a.cos(), a.sin())
-        })
-        .collect()
 }
 
 pub(super) fn show2(p: Vec2) -> String {
@@ -173,21 +154,6 @@ pub(super) fn winding_cases(winding_number: WindingFn) -> CheckResult {
     Ok(format!("{} points and 2 shared edges", table.len()))
 }
 
-/// The square [0, 2]² placed with `axis` as its normal axis at coordinate 1,
-/// counter-clockwise seen from +axis.
-pub(super) fn square_in_plane(axis: usize) -> Vec<Vec3> {
-    square()
-        .iter()
-        .map(|v| {
-            let mut p = Vec3::ZERO;
-            p[axis] = 1.0;
-            p[(axis + 1) % 3] = v.x;
-            p[(axis + 2) % 3] = v.y;
-            p
-        })
-        .collect()
-}
-
 pub(super) fn newell_cases(newell: NewellFn) -> CheckResult {
     let at_z5: Vec<Vec3> = square().iter().map(|v| v.extend(5.0)).collect();
     let cw: Vec<Vec3> = at_z5.iter().rev().copied().collect();
@@ -223,14 +189,8 @@ pub(super) fn newell_cases(newell: NewellFn) -> CheckResult {
 pub(super) fn polygon_cases(hit_polygon: PolygonFn) -> CheckResult {
     for axis in 0..3 {
         let quad = square_in_plane(axis);
-        let mut normal = Vec3::ZERO;
-        normal[axis] = 1.0;
-        let at = |u: Float, v: Float| {
-            let mut p = normal;
-            p[(axis + 1) % 3] = u;
-            p[(axis + 2) % 3] = v;
-            p
-        };
+        let normal = Vec3::AXES[axis];
+        let at = |u: Float, v: Float| on_plane(axis, u, v);
         let plane = ["x", "y", "z"][axis];
         // From 4 units in front, oblique, toward (0.5, 1.5) of the square: t = 1.
         let target = at(0.5, 1.5);

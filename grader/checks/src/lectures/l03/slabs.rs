@@ -204,34 +204,12 @@ pub(super) fn slabs_extreme(hit_slabs: SlabsFn) -> CheckResult {
     // that reaches back, where the aimed ones point away (so negative exits count). Against
     // exact integer arithmetic: no false misses, never NaN, and both ends of the span within
     // SPAN_TOL of the exact ones.
-    const SCALE: Float = 1.0 / 16.0;
-    let to_vec = |v: [i64; 3]| Vec3::new(v[0] as Float, v[1] as Float, v[2] as Float) * SCALE;
     let mut rng = Rng::new(3);
     // The ranges' own stream: the rays are those drawn before the ranges were added.
     let mut ranges = Rng::new(4);
     let mut exact_count = 0;
     for n in 0..4000 {
-        let mut lo = [0i64; 3];
-        let mut hi = [0i64; 3];
-        for i in 0..3 {
-            lo[i] = rng.int(-40, 40);
-            hi[i] = if rng.int(0, 7) == 0 { lo[i] } else { lo[i] + rng.int(1, 40) };
-        }
-        let o: [i64; 3] = std::array::from_fn(|_| rng.int(-100, 100));
-        let d: [i64; 3] = if n % 2 == 0 {
-            std::array::from_fn(|_| if rng.int(0, 3) == 0 { 0 } else { rng.int(-60, 60) })
-        } else {
-            let target: [i64; 3] = std::array::from_fn(|i| match rng.int(0, 2) {
-                0 => lo[i],
-                1 => hi[i],
-                _ => rng.int(lo[i], hi[i]),
-            });
-            let mut d = [target[0] - o[0], target[1] - o[1], target[2] - o[2]];
-            if !(0..3).any(|i| target[i] == lo[i] || target[i] == hi[i]) {
-                d[0] = hi[0] - o[0];
-            }
-            d
-        };
+        let GridRay { lo, hi, o, d } = grid_ray(&mut rng, n % 2 == 1);
         if d == [0; 3] {
             continue;
         }
@@ -244,12 +222,12 @@ pub(super) fn slabs_extreme(hit_slabs: SlabsFn) -> CheckResult {
         // With a range that reaches back, the aimed rays point away from their target: the box
         // is behind the origin, its boundary at t = −1.
         let d = if n % 4 == 3 { d.map(|c| -c) } else { d };
-        let r = Ray::new(to_vec(o), to_vec(d));
-        let got = hit_slabs(&r, to_vec(lo), to_vec(hi), range);
+        let r = Ray::new(sixteenths(o), sixteenths(d));
+        let got = hit_slabs(&r, sixteenths(lo), sixteenths(hi), range);
         let case = format!(
             "box {}..{}, {}, range ({}, {})",
-            vec3(to_vec(lo)),
-            vec3(to_vec(hi)),
+            vec3(sixteenths(lo)),
+            vec3(sixteenths(hi)),
             show_ray(&r),
             num(range.min),
             num(range.max)

@@ -2,18 +2,11 @@
 
 use super::area_lights::rect;
 use super::common::*;
+use raylab_testing::lights::{FALLOFF_AT_2, floor_at, spot_down};
 
 pub(super) fn falloff_cases(falloff: FalloffFn) -> CheckResult {
-    // At d = 2 by hand 1/(c + 2l + 4q): (1,0,0) → 1, (0,1,0) → ½, (0,0,1) → ¼,
-    // (1,1,1) → 1/7, (½,¼,⅛) → 1/(½ + ½ + ½) = ⅔. One division: 2ε relative.
-    let cases = [
-        ((1.0, 0.0, 0.0), 1.0),
-        ((0.0, 1.0, 0.0), 0.5),
-        ((0.0, 0.0, 1.0), 0.25),
-        ((1.0, 1.0, 1.0), 1.0 / 7.0),
-        ((0.5, 0.25, 0.125), 2.0 / 3.0),
-    ];
-    for ((c, l, q), expected) in cases {
+    // At d = 2 by hand 1/(c + 2l + 4q) (FALLOFF_AT_2). One division: 2ε relative.
+    for ((c, l, q), expected) in FALLOFF_AT_2 {
         let case = format!("attenuation (c, l, q) = ({c}, {l}, {q}) at distance 2");
         let f = falloff(attenuation(c, l, q), 2.0);
         let cause = if (f - (c + 2.0 * l + 4.0 * q)).abs() < 1e-4 && expected != 1.0 {
@@ -104,17 +97,6 @@ pub(super) fn spot_cases(spot: SpotFn) -> CheckResult {
     Ok("13 cases".into())
 }
 
-/// A spot at (0, 1, 0) shining straight down, no attenuation.
-pub(super) fn spot_light(inner_degrees: Float, outer_degrees: Float) -> Light {
-    light(LightKind::Spot {
-        position: Vec3::Y,
-        direction: -Vec3::Y,
-        inner: radians(inner_degrees),
-        outer: radians(outer_degrees),
-        attenuation: Attenuation::default(),
-    })
-}
-
 pub(super) fn illuminate_cases(illuminate: IlluminateFn) -> CheckResult {
     // Directional: L = −travel, d = ∞, intensity = colour, wherever the point.
     let travel = v(1.0, -2.0, 2.0) / 3.0;
@@ -158,11 +140,11 @@ pub(super) fn illuminate_cases(illuminate: IlluminateFn) -> CheckResult {
     )?;
     // Spot at (0, 1, 0) down, inner 30°, outer 60°: the floor point at α from the axis is
     // (tan α, 0, 0). On the axis and at 20°: colour; at 61° and above the light: black.
-    let spot = spot_light(30.0, 60.0);
+    let spot = light(spot_down(30.0, 60.0));
     for degrees in [0.0, 20.0] {
         let case =
             format!("spot at (0, 1, 0) along −y (inner 30°, outer 60°), floor point {degrees}° off its axis");
-        let s = illuminate(&spot, v(radians(degrees).tan(), 0.0, 0.0));
+        let s = illuminate(&spot, floor_at(degrees));
         let cause = if s.intensity == BLACK {
             "cos α = −L·axis: the axis points away from the light, L toward it"
         } else {
@@ -171,7 +153,7 @@ pub(super) fn illuminate_cases(illuminate: IlluminateFn) -> CheckResult {
         // Every factor is exactly 1 inside the inner cone; 4ε leaves room for another order of products.
         close3(&case, s.intensity, COLOR, 4.0 * EPS, cause)?;
     }
-    for p in [v(radians(61.0).tan(), 0.0, 0.0), v(0.3, 2.0, 0.0)] {
+    for p in [floor_at(61.0), v(0.3, 2.0, 0.0)] {
         let case = format!("the same spot, point {} (outside its cone)", vec3(p));
         let s = illuminate(&spot, p);
         close3(

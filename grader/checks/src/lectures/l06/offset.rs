@@ -1,6 +1,7 @@
 //! The checks of `offset.rs`: offset_origin and the two naive offsets.
 
 use super::common::*;
+use raylab_testing::offsets::{OffsetCase, random_offset_cases};
 
 /// Checks one offset: moved along ±n only, to `side` (+1 or −1) of the surface, by
 /// 4 to 97 ulp of the largest coordinate of p and from (the lecture's bound:
@@ -109,23 +110,14 @@ pub(super) fn offset_cases(offset: OffsetFn) -> CheckResult {
         "add a floor (the smallest normal float) so the point moves even when p = from = 0",
     )?;
     // Random points, origins and normals at scales 10⁻³⁰ to 10²⁰: within the bound.
-    let mut rng = Rng::new(0x0ff5e7);
     let mut largest: Float = 0.0;
-    for scale in [1e-30, 1e-4, 1.0, 7.0, 1e4, 1e5, 1e20] {
-        for from_scale in [0.0, 1.0, 100.0] {
-            for _ in 0..100 {
-                let p = rng.in_ball(scale);
-                let from = rng.in_ball(scale * from_scale);
-                let (n, dir) = (rng.unit_vector(), rng.unit_vector());
-                let side = if dir.dot(n) < 0.0 { -1.0 } else { 1.0 };
-                let case =
-                    format!("p = {}, n = {}, dir = {}, from {}", vec3(p), vec3(n), vec3(dir), vec3(from));
-                let moved = offset(p, n, dir, from);
-                check_offset(&case, p, n, from, moved, side)?;
-                let m = p.abs().max_element().max(from.abs().max_element());
-                largest = largest.max((moved - p).abs().max_element() / ulp(m));
-            }
-        }
+    for OffsetCase { p, n, dir, from } in random_offset_cases(100) {
+        let side = if dir.dot(n) < 0.0 { -1.0 } else { 1.0 };
+        let case = format!("p = {}, n = {}, dir = {}, from {}", vec3(p), vec3(n), vec3(dir), vec3(from));
+        let moved = offset(p, n, dir, from);
+        check_offset(&case, p, n, from, moved, side)?;
+        let m = p.abs().max_element().max(from.abs().max_element());
+        largest = largest.max((moved - p).abs().max_element() / ulp(m));
     }
     Ok(format!("7 cases and 2100 random ones, at most {largest:.0} ulp"))
 }

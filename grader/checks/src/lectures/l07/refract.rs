@@ -1,6 +1,7 @@
 //! The checks of `refract.rs`: interface, refract, the critical angle and the tiny glass sphere.
 
 use super::common::*;
+use raylab_testing::refraction::{ExactlyOne, sin2_t_exactly_one};
 
 pub(super) fn interface_cases(interface: InterfaceFn) -> CheckResult {
     let show = |s: &Interface| {
@@ -205,29 +206,19 @@ pub(super) fn critical_angle(refract: RefractFn) -> CheckResult {
     }
     // sin²θ_t = (η·η)(1 − cos θ_i·cos θ_i) rounding to exactly 1: cos θ_i = k/64 (so
     // 1 − cos²θ_i is exact) and η among the floats nearest 1/sin θ_i. Exactly 1 is
-    // θ_t = 90°: None. The product is evaluated here as the contract states it.
+    // θ_t = 90°: None. The product is evaluated as the contract states it.
     let mut exact_ones = 0;
-    for k in 1..64 {
-        let cos_i = k as Float / 64.0;
-        let sin2_i = 1.0 - cos_i * cos_i;
-        let i = v(sin2_i.sqrt(), -cos_i, 0.0);
-        let nearest = 1.0 / sin2_i.sqrt();
-        for step in -8i64..=8 {
-            let eta = Float::from_bits((nearest.to_bits() as i64 + step) as _);
-            if eta * eta * sin2_i != 1.0 {
-                continue;
-            }
-            exact_ones += 1;
-            let case = format!("cos θ_i = {k}/64, η = {eta:e}: sin²θ_t = (η·η)(1 − cos²θ_i) is exactly 1");
-            let got = refract(i, Vec3::Y, eta);
-            ensure(
-                got.is_none(),
-                case,
-                "None (θ_t = 90°)",
-                show(&got),
-                "sin²θ_t = 1 means θ_t = 90°, no transmitted ray: test sin²θ_t ≥ 1, not > 1",
-            )?;
-        }
+    for ExactlyOne { k, i, eta, .. } in sin2_t_exactly_one() {
+        exact_ones += 1;
+        let case = format!("cos θ_i = {k}/64, η = {eta:e}: sin²θ_t = (η·η)(1 − cos²θ_i) is exactly 1");
+        let got = refract(i, Vec3::Y, eta);
+        ensure(
+            got.is_none(),
+            case,
+            "None (θ_t = 90°)",
+            show(&got),
+            "sin²θ_t = 1 means θ_t = 90°, no transmitted ray: test sin²θ_t ≥ 1, not > 1",
+        )?;
     }
     // Normal incidence for η from 1/2.4 to 2.4: t = −n, finite. Tolerance 8ε as in the unit check.
     for eta in [1.0 / 2.4, 1.0 / 1.5, 1.0, 1.5, 2.4] {

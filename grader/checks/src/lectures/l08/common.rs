@@ -17,8 +17,8 @@ pub(super) use raylab::{Color, Float, Image, Ray, Scene, Vec3};
 
 pub(super) use crate::check::{CheckResult, close, ensure, fail, v, vec3};
 pub(super) use raylab_testing::scenes::{
-    BACKGROUND, block_with_tile, cuboid, directional, facing_mirrors, glass, matte, mirror, mirror_and_wall,
-    plane, scene, sphere,
+    BACKGROUND, block_with_tile, directional, facing_mirrors, glass, matte, mirror_and_wall, plane, scene,
+    sphere, three_balls, tile_in_glass,
 };
 
 pub(super) const EPS: Float = Float::EPSILON;

@@ -2,22 +2,6 @@
 
 use super::common::*;
 
-/// A mirror ball, a glass ball and a matte one over a floor, lit, seen from (0, 0, 5).
-pub(super) fn three_balls() -> Scene {
-    scene(
-        vec![
-            plane(Vec3::Y, -1.0, 0),
-            sphere(v(-1.2, 0.0, 0.0), 0.8, 1),
-            sphere(v(0.0, 0.0, 0.5), 0.6, 2),
-            sphere(v(1.2, 0.0, 0.0), 0.8, 3),
-        ],
-        vec![matte(v(0.8, 0.8, 0.6)), mirror(0.8), glass(1.5), matte(v(0.2, 0.4, 0.9))],
-        vec![directional(v(-1.0, 2.0, 1.0).normalize(), Color::ONE)],
-        v(0.3, 0.4, 0.6),
-        Color::splat(0.1),
-    )
-}
-
 /// A 16 × 12 render of [`three_balls`]: each pixel against `trace` of 01's `pixel_ray` at
 /// depth 0 and weight 1 (the student's own trace and camera, checked by their own checks),
 /// and the primary-ray count.

@@ -179,18 +179,8 @@ pub(super) fn trace_cases(trace: TraceFn) -> CheckResult {
     // R = ((1 − 1.5)/(1 + 1.5))² = 0.04. Without Fresnel only the transmitted ray, weight 1,
     // sees the tile; with it, the mirror ray (0.04) sees the sky B behind the eye and the
     // transmitted one (0.96) the tile.
-    let sky = v(1.0, 0.0, 1.0);
-    let s = scene(
-        vec![
-            cuboid(v(-5.0, -5.0, -10.0), v(5.0, 5.0, -1.0), 0),
-            cuboid(v(-1.0, -1.0, -6.0), v(1.0, 1.0, -5.0), 1),
-        ],
-        vec![glass(1.5), matte(v(0.2, 0.6, 0.4))],
-        vec![],
-        sky,
-        Color::splat(0.5),
-    );
-    let ray = Ray::new(Vec3::ZERO, -Vec3::Z);
+    let (s, ray) = tile_in_glass();
+    let sky = s.background;
     let settings = TraceSettings { max_depth: 1, ..TraceSettings::default() };
     let case = "head-on into glass (η = 1.5) holding a tile, max_depth 1, fresnel off";
     let (color, counted) = traced(trace, &s, &ray, &settings);

@@ -2,6 +2,7 @@
 
 use super::common::*;
 use crate::check::{ray, show_span};
+use raylab_testing::boxes::FACE_PLANE_RAYS;
 use raylab_testing::exact::{Ratio, exact_span};
 
 pub(super) fn union_cases(union: UnionFn) -> CheckResult {
@@ -207,13 +208,7 @@ pub(super) fn slab_boundaries(hit: SlabFn) -> CheckResult {
     let all = Interval::POSITIVE;
     // Origins exactly on the planes y = ±1 (and on an edge line), moving along ±x with ±0 in
     // the other components: 0·(±∞) = NaN must count as inside; the x span is [2, 4].
-    for (o, d) in [
-        ([-3.0, 1.0, 0.0], [1.0, 0.0, 0.0]),
-        ([-3.0, 1.0, 0.0], [1.0, -0.0, 0.0]),
-        ([-3.0, -1.0, 0.0], [1.0, -0.0, -0.0]),
-        ([-3.0, 1.0, 1.0], [1.0, -0.0, 0.0]),
-        ([3.0, -1.0, -1.0], [-1.0, 0.0, -0.0]),
-    ] {
+    for (o, d) in FACE_PLANE_RAYS {
         let r = ray(o, d);
         let case =
             format!("cube [−1, 1]³, ray from {} along {} (on a face plane)", vec3(r.origin), vec3(r.dir));

@@ -1,6 +1,7 @@
 //! The checks of `traverse.rs`: Bvh::closest_hit and any_hit.
 
 use super::common::*;
+use raylab_testing::meshes::edge_and_vertex_targets;
 
 pub(super) use raylab_testing::scenes::sphere;
 
@@ -218,16 +219,7 @@ pub(super) fn shared_edges(closest: ClosestFn) -> CheckResult {
     // edge, and pick brute force's triangle where two tie.
     let mesh = Arc::new(Mesh::icosphere(2));
     let objects = [Object { shape: Shape::Mesh(mesh.clone()), material: 0, transform: None }];
-    let mut targets = mesh.positions.clone();
-    for tri in &mesh.triangles {
-        for k in 0..3 {
-            let (i, j) = (tri[k], tri[(k + 1) % 3]);
-            if i < j {
-                let (p, q) = (mesh.positions[i as usize], mesh.positions[j as usize]);
-                targets.extend([0.5, 0.1, 0.7].map(|s| p.lerp(q, s)));
-            }
-        }
-    }
+    let targets = edge_and_vertex_targets(&mesh);
     let rays: Vec<(Ray, Interval)> = [Vec3::ZERO, v(0.1, -0.2, 0.05)]
         .into_iter()
         .flat_map(|origin| targets.iter().map(move |&p| (Ray::new(origin, p - origin), Interval::POSITIVE)))

@@ -6,7 +6,6 @@ pub(super) use l01_transforms::Camera;
 pub(super) use l04_quadrics_transforms::BruteForce;
 pub(super) use l08_ray_tree::{TraceSettings, World};
 pub(super) use l10_textures_sampling::{Filter, Pattern, render_supersampled};
-pub(super) use raylab::math::consts::{PI, TAU};
 pub(super) use raylab::random::Rng;
 pub(super) use raylab::stats::{Counter, RayStats};
 pub(super) use raylab::{Color, Float, Image, Scene, Vec2, Vec3};

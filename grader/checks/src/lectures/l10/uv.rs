@@ -1,6 +1,7 @@
 //! The checks of `uv.rs`: sphere_uv, plane_uv, triangle_uv.
 
 use super::common::*;
+use raylab_testing::uv::sphere_grid;
 
 pub(super) const SPHERE_UV: &str = "u = ½ + atan2(−z, x)/2π, v = ½ + atan2(y, √(x² + z²))/π";
 
@@ -57,22 +58,17 @@ pub(super) fn sphere_cases(sphere_uv: SphereUvFn) -> CheckResult {
     // p = (cos λ cos φ, sin λ, −cos λ sin φ); every (u, v) of a 9 × 9 grid comes back, at
     // radius 1, 3 and 1/7 (only the direction counts). sin, cos, atan2 and the products, a
     // few ulp each: 8ε; allowed 16ε.
-    for i in 1..10 {
-        for j in 1..10 {
-            let (u, v) = (i as Float / 10.0, j as Float / 10.0);
-            let (phi, lambda) = (TAU * (u - 0.5), PI * (v - 0.5));
-            let p = v3(lambda.cos() * phi.cos(), lambda.sin(), -lambda.cos() * phi.sin());
-            for s in [1.0, 3.0, 1.0 / 7.0] {
-                let case = format!("the point {} (radius {})", vec3(s * p), num(s));
-                let got = sphere_uv(s * p);
-                let cause = if s != 1.0 && near2(sphere_uv(p), uv(u, v), 16.0 * EPS) {
-                    "only the direction of p matters: a point at radius 3 has the uv of p/3 (atan2 of \
-                     ratios, or normalise p first)"
-                } else {
-                    SPHERE_UV
-                };
-                same_uv(&case, got, uv(u, v), 16.0 * EPS, cause)?;
-            }
+    for (expected, p) in sphere_grid() {
+        for s in [1.0, 3.0, 1.0 / 7.0] {
+            let case = format!("the point {} (radius {})", vec3(s * p), num(s));
+            let got = sphere_uv(s * p);
+            let cause = if s != 1.0 && near2(sphere_uv(p), expected, 16.0 * EPS) {
+                "only the direction of p matters: a point at radius 3 has the uv of p/3 (atan2 of ratios, \
+                 or normalise p first)"
+            } else {
+                SPHERE_UV
+            };
+            same_uv(&case, got, expected, 16.0 * EPS, cause)?;
         }
     }
     Ok("6 axis points, 243 grid points, a point off the sphere".into())
