@@ -2,8 +2,11 @@
 //! student's intersections and compared with the snapshots: the `NN/geometry/S` checks, and the
 //! first question when a picture differs.
 
+use std::sync::Mutex;
+use std::sync::atomic::{AtomicUsize, Ordering};
+
 use raylab::compare::compare;
-use raylab::{Color, Float, Image, Scene};
+use raylab::{Color, Float, Hit, Image, Intersector, Interval, Ray, Scene};
 
 use super::no_snapshot;
 use crate::check::{CheckResult, Failure, fail};
@@ -31,14 +34,75 @@ pub fn geometry_images(lecture: &str, scene: &Scene) -> Result<[Image; 3], Strin
             let camera =
                 Camera::from_scene(&scene.camera, scene.width, scene.height).map_err(|e| e.to_string())?;
             let (w, h, objects) = (scene.width, scene.height, objects.as_ref());
+            let answers = Answers::default();
+            let id = object_id_image(&camera, &Recorded { objects, answers: &answers }, w, h);
+            let answers = answers.0.into_inner().unwrap_or_default();
+            let replayed = || Replayed { objects, answers: &answers, next: AtomicUsize::new(0) };
             return Ok([
-                object_id_image(&camera, &objects, w, h),
-                depth_image(&camera, &objects, w, h),
-                normal_image(&camera, &objects, w, h),
+                id,
+                depth_image(&camera, &replayed(), w, h),
+                normal_image(&camera, &replayed(), w, h),
             ]);
         }
     }
     Err(format!("the intersections for lecture {lecture}'s scenes are not built"))
+}
+
+/// The answers of an intersector, in the order it gave them: the three geometry images cast the
+/// same rays in the same order (each pixel's centre, the camera's range), so the first image's
+/// answers are the second's and the third's ([`Replayed`]) and the student's intersections are
+/// asked once per pixel, not three times. Kept while the first image is drawn ([`Recorded`]).
+#[derive(Default)]
+struct Answers(Mutex<Vec<([u64; 8], Option<Hit>)>>);
+
+/// A query as the answers hold it: its ray and range, to the bit.
+fn query(ray: &Ray, range: Interval) -> [u64; 8] {
+    let (o, d) = (ray.origin, ray.dir);
+    [o.x, o.y, o.z, d.x, d.y, d.z, range.min, range.max].map(|x| x.to_bits() as u64)
+}
+
+/// `objects`, its answers kept in `answers`.
+struct Recorded<'a> {
+    objects: &'a dyn Intersector,
+    answers: &'a Answers,
+}
+
+impl Intersector for Recorded<'_> {
+    fn closest_hit(&self, ray: &Ray, range: Interval) -> Option<Hit> {
+        let answer = self.objects.closest_hit(ray, range);
+        if let Ok(mut answers) = self.answers.0.lock() {
+            answers.push((query(ray, range), answer));
+        }
+        answer
+    }
+
+    fn any_hit(&self, ray: &Ray, range: Interval) -> bool {
+        self.objects.any_hit(ray, range)
+    }
+}
+
+/// `objects`, answering its n-th query from the recorded n-th answer when the two queries are the
+/// same to the bit, and asking `objects` otherwise (an image that casts other rays, or in another
+/// order: several threads). The student's intersections are functions of the query alone
+/// (`&self`), so each image is what it would be without the replay (its ray counts aside, which
+/// no geometry check reads); the images' rays are still cast by the student's lecture 02 code.
+struct Replayed<'a> {
+    objects: &'a dyn Intersector,
+    answers: &'a [([u64; 8], Option<Hit>)],
+    next: AtomicUsize,
+}
+
+impl Intersector for Replayed<'_> {
+    fn closest_hit(&self, ray: &Ray, range: Interval) -> Option<Hit> {
+        match self.answers.get(self.next.fetch_add(1, Ordering::Relaxed)) {
+            Some((asked, answer)) if *asked == query(ray, range) => *answer,
+            _ => self.objects.closest_hit(ray, range),
+        }
+    }
+
+    fn any_hit(&self, ray: &Ray, range: Interval) -> bool {
+        self.objects.any_hit(ray, range)
+    }
 }
 
 /// The student's three geometry images of `scene` (see [`geometry_images`]), as one value of
@@ -182,4 +246,61 @@ pub(super) fn check_geometry(file: &SceneFile) -> CheckResult {
         Err(e) => Err(fail(format!("{}/{}", file.folder, file.name()), "the geometry images", e, "")),
     })
     .unwrap_or_else(|| Ok(String::new()))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use raylab::Vec3;
+
+    /// An intersector that hits everything at t = the ray's origin's x, and counts its queries.
+    #[derive(Default)]
+    struct Counting(AtomicUsize);
+
+    impl Intersector for Counting {
+        fn closest_hit(&self, ray: &Ray, _range: Interval) -> Option<Hit> {
+            self.0.fetch_add(1, Ordering::Relaxed);
+            (ray.origin.x > 0.0).then(|| Hit::new(ray, ray.origin.x, Vec3::Y))
+        }
+    }
+
+    fn rays(n: usize) -> Vec<Ray> {
+        (0..n).map(|i| Ray::new(Vec3::new(i as Float - 2.0, 0.0, 0.0), Vec3::Z)).collect()
+    }
+
+    #[test]
+    fn the_same_queries_in_the_same_order_are_answered_from_the_first_images_answers() {
+        let (objects, answers, range) = (Counting::default(), Answers::default(), Interval::new(0.0, 10.0));
+        let first: Vec<_> = rays(6)
+            .iter()
+            .map(|r| Recorded { objects: &objects, answers: &answers }.closest_hit(r, range))
+            .collect();
+        let answers = answers.0.into_inner().unwrap();
+        let replayed = Replayed { objects: &objects, answers: &answers, next: AtomicUsize::new(0) };
+        let again: Vec<_> = rays(6).iter().map(|r| replayed.closest_hit(r, range)).collect();
+        assert_eq!(again, first);
+        assert_eq!(objects.0.load(Ordering::Relaxed), 6, "the second pass asked the intersector again");
+    }
+
+    #[test]
+    fn other_queries_or_another_order_are_asked_of_the_intersector() {
+        let (objects, answers, range) = (Counting::default(), Answers::default(), Interval::new(0.0, 10.0));
+        let recorded = Recorded { objects: &objects, answers: &answers };
+        for r in &rays(6) {
+            let _ = recorded.closest_hit(r, range);
+        }
+        let answers = answers.0.into_inner().unwrap();
+        let replayed = Replayed { objects: &objects, answers: &answers, next: AtomicUsize::new(0) };
+        let mut reversed = rays(6);
+        reversed.reverse();
+        // Each answer is the intersector's own for its ray, not the recorded one at its place.
+        for r in &reversed {
+            assert_eq!(replayed.closest_hit(r, range), objects.closest_hit(r, range));
+        }
+        // Another range is another query too.
+        let other = Replayed { objects: &objects, answers: &answers, next: AtomicUsize::new(0) };
+        let shorter = Interval::new(0.0, 1.0);
+        assert_eq!(other.closest_hit(&rays(1)[0], shorter), objects.closest_hit(&rays(1)[0], shorter));
+        assert_eq!(objects.0.load(Ordering::Relaxed), 6 + 2 * 6 + 2);
+    }
 }
