@@ -145,6 +145,22 @@ impl Channel {
     }
 }
 
+/// The student's code drawing from the generator `rng`: its value and the generator as the code
+/// left it, as one value through [`student`] (the check draws from it next; in the judge the code
+/// does not run, so the generator comes from the subject).
+#[track_caller]
+pub fn drawn<T: Serialize + DeserializeOwned>(
+    rng: &mut raylab::random::Rng,
+    f: impl FnOnce(&mut raylab::random::Rng) -> T,
+) -> T {
+    let (value, after) = student(|| {
+        let value = f(rng);
+        (value, rng.clone())
+    });
+    *rng = after;
+    value
+}
+
 thread_local! {
     /// The role of the check running on this thread, for the length of [`enter`]; none outside
     /// one (the checks' own tests): local grading.

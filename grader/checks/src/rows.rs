@@ -11,6 +11,8 @@
 ///   an argument (the lecture's, or a planted mistake in the checks' tests);
 /// - `= EXPR`: what the row calls, where that is not the crate's function of the same name
 ///   (a method: `Aabb::new(min, max).surface_area()`);
+/// - `=> EXPR`: the proxy's whole body, where the value crosses otherwise than whole (a lecture's
+///   type field by field, `boxed(|| a.union(b))`; a generator's state with it);
 /// - `, remote`: the call a hidden check makes of it, as a module of the same name (`remote.rs`:
 ///   `name::call`, made by the subject, and `name::answer`, the subject's side).
 ///
@@ -22,13 +24,13 @@
 /// ```
 macro_rules! student_fns {
     ($krate:ident: $(
-        fn $name:ident($($arg:ident: $ty:ty),* $(,)?) -> $ret:ty $(as $alias:ident)? $(= $body:expr)? $(, $remote:ident)?;
+        fn $name:ident($($arg:ident: $ty:ty),* $(,)?) -> $ret:ty $(as $alias:ident)? $(= $body:expr)? $(=> $proxy:expr)? $(, $remote:ident)?;
     )+) => {
         $(
             #[doc = concat!("`", stringify!($krate), "::", stringify!($name), "`, its value taken through `judge::student`.")]
             #[track_caller]
             pub(super) fn $name($($arg: $ty),*) -> $ret {
-                crate::judge::student(|| crate::rows::row_call!([$($body)?] $krate::$name($($arg),*)))
+                crate::rows::proxy_body!([$($proxy)?] crate::judge::student(|| crate::rows::row_call!([$($body)?] $krate::$name($($arg),*))))
             }
             crate::rows::fn_type! { [$($alias)?] $name ($($ty),*) -> $ret }
             crate::rows::remote_row! { [$($remote)?] $krate::$name($($arg: $ty),*) -> $ret = [$($body)?] }
@@ -47,6 +49,17 @@ macro_rules! row_call {
     };
 }
 pub(crate) use row_call;
+
+/// A proxy's body: the row's `=> EXPR`, or its value taken whole through `judge::student`.
+macro_rules! proxy_body {
+    ([] $whole:expr) => {
+        $whole
+    };
+    ([$proxy:expr] $whole:expr) => {
+        $proxy
+    };
+}
+pub(crate) use proxy_body;
 
 /// The type a row of [`student_fns!`] names, `pub(super) type NameFn = fn(…) -> …;`, or nothing
 /// for a row without `as NameFn`.

@@ -19,16 +19,22 @@ crate::rows::student_fns! { l01_transforms:
     fn frame(origin: Vec3, i: Vec3, j: Vec3, k: Vec3) -> Mat4 as FrameFn;
     fn is_basis(i: Vec3, j: Vec3, k: Vec3) -> bool as BasisFn;
     fn screen_coords(x: u32, y: u32, width: u32, height: u32) -> (Float, Float) as ScreenFn;
+    fn look_at(eye: Vec3, at: Vec3, up: Vec3) -> Result<Mat4, CameraError> as LookAtFn
+        => camera_result(|| l01_transforms::look_at(eye, at, up));
+    fn perspective_ray(camera: &PerspectiveCamera, sx: Float, sy: Float) -> Ray as PerspectiveFn
+        = camera.generate_ray(sx, sy);
+    fn orthographic_ray(camera: &OrthographicCamera, sx: Float, sy: Float) -> Ray as OrthographicFn
+        = camera.generate_ray(sx, sy);
 }
 
-/// `l01_transforms::look_at`, through `judge::student` (its error as the variant's index: the
-/// lecture's type is not the kit's).
+/// A camera's result of the student's code, through `judge::student` (its error as the variant's
+/// index: the lecture's type is not the kit's).
 #[track_caller]
-pub(super) fn look_at(eye: Vec3, at: Vec3, up: Vec3) -> Result<Mat4, CameraError> {
+fn camera_result(f: impl FnOnce() -> Result<Mat4, CameraError>) -> Result<Mat4, CameraError> {
     const ERRORS: [CameraError; 3] =
         [CameraError::EyeAtTarget, CameraError::UpParallelToView, CameraError::NotFinite];
     let got = crate::judge::student(|| {
-        l01_transforms::look_at(eye, at, up).map_err(|e| match e {
+        f().map_err(|e| match e {
             CameraError::EyeAtTarget => 0u8,
             CameraError::UpParallelToView => 1,
             CameraError::NotFinite => 2,
@@ -36,22 +42,6 @@ pub(super) fn look_at(eye: Vec3, at: Vec3, up: Vec3) -> Result<Mat4, CameraError
     });
     got.map_err(|e| ERRORS[usize::from(e.min(2))])
 }
-
-/// `PerspectiveCamera::generate_ray`, through `judge::student`.
-#[track_caller]
-pub(super) fn perspective_ray(camera: &PerspectiveCamera, sx: Float, sy: Float) -> Ray {
-    crate::judge::student(|| camera.generate_ray(sx, sy))
-}
-
-/// `OrthographicCamera::generate_ray`, through `judge::student`.
-#[track_caller]
-pub(super) fn orthographic_ray(camera: &OrthographicCamera, sx: Float, sy: Float) -> Ray {
-    crate::judge::student(|| camera.generate_ray(sx, sy))
-}
-
-pub(super) type LookAtFn = fn(Vec3, Vec3, Vec3) -> Result<Mat4, CameraError>;
-pub(super) type PerspectiveFn = fn(&PerspectiveCamera, Float, Float) -> Ray;
-pub(super) type OrthographicFn = fn(&OrthographicCamera, Float, Float) -> Ray;
 
 /// Entries of unit-sized matrices and vectors: sin, cos, a product and a
 /// sum round a few times, each by ε/2 of a number ≤ 1; 8ε holds them

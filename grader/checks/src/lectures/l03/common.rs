@@ -27,6 +27,12 @@ crate::rows::student_fns! { l03_polygons_triangles:
     fn interpolate_normal(normals: &[Vec3; 3], beta: Float, gamma: Float) -> Vec3 as InterpolateFn;
     fn hit_triangle(ray: &Ray, vertices: &[Vec3; 3], normals: Option<&[Vec3; 3]>, range: Interval) -> Option<Hit> as HitTriangleFn;
     fn hit_mesh(ray: &Ray, mesh: &Mesh, range: Interval) -> Option<Hit> as MeshFn;
+    fn hit_triangle_cramer(ray: &Ray, a: Vec3, b: Vec3, c: Vec3, range: Interval)
+        -> Option<TriangleHit> as TriangleFn => triangle_hit(|| l03_polygons_triangles::hit_triangle_cramer(ray, a, b, c, range));
+    fn hit_triangle_moller_trumbore(ray: &Ray, a: Vec3, b: Vec3, c: Vec3, range: Interval)
+        -> Option<TriangleHit> => triangle_hit(|| l03_polygons_triangles::hit_triangle_moller_trumbore(ray, a, b, c, range));
+    fn hit_triangle_watertight(ray: &Ray, a: Vec3, b: Vec3, c: Vec3, range: Interval)
+        -> Option<TriangleHit> => triangle_hit(|| l03_polygons_triangles::hit_triangle_watertight(ray, a, b, c, range));
 }
 
 /// A triangle hit of the student's, taken through `judge::student` field by field (the
@@ -39,22 +45,6 @@ fn triangle_hit(hit: impl FnOnce() -> Option<TriangleHit>) -> Option<TriangleHit
         gamma,
     })
 }
-
-/// The three triangle tests of lecture 03, each through [`triangle_hit`].
-macro_rules! triangle_fns {
-    ($($name:ident),+) => {
-        $(
-            #[doc = concat!("`l03_polygons_triangles::", stringify!($name), "`, through `judge::student`.")]
-            #[track_caller]
-            pub(super) fn $name(ray: &Ray, a: Vec3, b: Vec3, c: Vec3, range: Interval) -> Option<TriangleHit> {
-                triangle_hit(|| l03_polygons_triangles::$name(ray, a, b, c, range))
-            }
-        )+
-    };
-}
-triangle_fns!(hit_triangle_cramer, hit_triangle_moller_trumbore, hit_triangle_watertight);
-
-pub(super) type TriangleFn = fn(&Ray, Vec3, Vec3, Vec3, Interval) -> Option<TriangleHit>;
 
 /// t, points and unit normals of unit-sized shapes a few units away: each
 /// method rounds a handful of operations on numbers ≤ 4 (most inputs are

@@ -18,6 +18,10 @@ crate::rows::student_fns! { l05_shading:
     fn shade_light(material: &Material, diffuse: Color, n: Vec3, v: Vec3, sample: &LightSample) -> Color as ShadeLightFn;
     fn shade_local(material: &Material, diffuse: Color, hit: &Hit, v: Vec3, lights: &[Light], ambient: Color)
         -> Color as ShadeLocalFn;
+    fn illuminate(light: &Light, point: Vec3) -> LightSample as IlluminateFn
+        => sampled(|| l05_shading::illuminate(light, point));
+    fn sample_light(light: &Light, point: Vec3, u: Vec2) -> LightSample as SampleFn
+        => sampled(|| l05_shading::sample_light(light, point, u));
 }
 
 /// A light sample of the student's, taken through `judge::student` field by field (the
@@ -30,21 +34,6 @@ fn sampled(sample: impl FnOnce() -> LightSample) -> LightSample {
     });
     LightSample { direction, distance, intensity }
 }
-
-/// `l05_shading::illuminate`, through `judge::student`.
-#[track_caller]
-pub(super) fn illuminate(light: &Light, point: Vec3) -> LightSample {
-    sampled(|| l05_shading::illuminate(light, point))
-}
-
-/// `l05_shading::sample_light`, through `judge::student`.
-#[track_caller]
-pub(super) fn sample_light(light: &Light, point: Vec3, u: Vec2) -> LightSample {
-    sampled(|| l05_shading::sample_light(light, point, u))
-}
-
-pub(super) type SampleFn = fn(&Light, Vec3, Vec2) -> LightSample;
-pub(super) type IlluminateFn = fn(&Light, Vec3) -> LightSample;
 
 pub(super) const EPS: Float = Float::EPSILON;
 pub(super) const COLOR: Color = Color::new(1.0, 0.5, 0.25);

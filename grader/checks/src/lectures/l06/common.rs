@@ -29,7 +29,7 @@ crate::rows::student_fns! { l06_shadows:
         lights: &[Light],
         ambient: Color,
         settings: ShadowSettings,
-    ) -> Color;
+    ) -> Color as ShadeFn;
     fn shade_area_light(
         scene: &dyn Intersector,
         materials: &[Material],
@@ -37,27 +37,13 @@ crate::rows::student_fns! { l06_shadows:
         light: &Light,
         settings: ShadowSettings,
     ) -> Color as AreaFn;
-}
-
-/// `l06_shadows::stratified`, through `judge::student`: the samples and the generator as the
-/// student's code left it.
-#[track_caller]
-pub(super) fn stratified(n: u32, rng: &mut Rng) -> Vec<Vec2> {
-    let (samples, after) = crate::judge::student(|| {
-        let samples = l06_shadows::stratified(n, rng);
-        (samples, rng.clone())
-    });
-    *rng = after;
-    samples
+    fn stratified(n: u32, rng: &mut Rng) -> Vec<Vec2> as StratifiedFn
+        => crate::judge::drawn(rng, |rng| l06_shadows::stratified(n, rng));
 }
 pub(super) use raylab::{BLACK, Color, Float, Hit, Intersector, Interval, Ray, Vec2, Vec3, WHITE, radians};
 pub(super) use std::sync::atomic::{AtomicUsize, Ordering};
 
 pub(super) use crate::check::{CheckResult, Failure, close3, ensure, num, v, vec3, wide, wide3};
-
-pub(super) type ShadeFn =
-    fn(&dyn Intersector, &[Material], &Surface, &[Light], Color, ShadowSettings) -> Color;
-pub(super) type StratifiedFn = fn(u32, &mut Rng) -> Vec<Vec2>;
 
 pub(super) const EPS: Float = Float::EPSILON;
 

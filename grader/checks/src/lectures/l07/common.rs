@@ -5,8 +5,6 @@ pub(super) use raylab::{Float, Hit, Interval, Ray, Vec3};
 
 pub(super) use crate::check::{CheckResult, close, close3, ensure, fail, maybe, num, v, vec3, wide, wide3};
 
-pub(super) type InterfaceFn = fn(&Hit, Float) -> Interface;
-
 pub(super) const EPS: Float = Float::EPSILON;
 
 /// cos of an angle in degrees, computed in f64 and rounded once.
@@ -31,17 +29,19 @@ crate::rows::student_fns! { l07_reflection_refraction:
     fn fresnel_dielectric(cos_i: Float, eta_i: Float, eta_t: Float) -> Float;
     fn mirror_direction(dir: Vec3, n: Vec3) -> Vec3 as MirrorFn;
     fn refract(i: Vec3, n: Vec3, eta_ratio: Float) -> Option<Vec3> as RefractFn, remote;
+    fn interface(hit: &Hit, ior: Float) -> Interface as InterfaceFn
+        => interfaced(|| l07_reflection_refraction::interface(hit, ior));
 }
 crate::rows::student_fns! { l02_ray_casting:
     fn hit_sphere_stable(ray: &Ray, center: Vec3, radius: Float, range: Interval) -> Option<Hit>;
 }
 
-/// `l07_reflection_refraction::interface`, its value taken through `judge::student` (field by
-/// field: the lecture's type is not the kit's).
+/// An interface of the student's, taken through `judge::student` field by field (the lecture's
+/// type is not the kit's).
 #[track_caller]
-pub(super) fn interface(hit: &Hit, ior: Float) -> Interface {
+fn interfaced(f: impl FnOnce() -> Interface) -> Interface {
     let (normal, eta_i, eta_t, entering) = crate::judge::student(|| {
-        let i = l07_reflection_refraction::interface(hit, ior);
+        let i = f();
         (i.normal, i.eta_i, i.eta_t, i.entering)
     });
     Interface { normal, eta_i, eta_t, entering }

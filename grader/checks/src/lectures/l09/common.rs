@@ -17,6 +17,16 @@ pub(super) use crate::judge::student;
 crate::rows::student_fns! { l09_acceleration:
     fn sah_split(bins: &[Bin; BINS]) -> Option<(usize, Float)> as SahFn;
     fn aabb_surface_area(min: Vec3, max: Vec3) -> Float as AreaFn = Aabb::new(min, max).surface_area(), remote;
+    fn aabb_hit(b: &Aabb, ray: &Ray, inv_dir: Vec3, range: Interval) -> Option<(Float, Float)> as SlabFn
+        = b.hit(ray, inv_dir, range);
+    fn aabb_union(a: Aabb, b: Aabb) -> Aabb as UnionFn => boxed(|| a.union(b));
+    fn aabb_union_point(a: Aabb, p: Vec3) -> Aabb as UnionPointFn => boxed(|| a.union_point(p));
+    fn sphere_bounds(center: Vec3, radius: Float) -> Aabb as SphereBoundsFn
+        => boxed(|| l09_acceleration::sphere_bounds(center, radius));
+    fn triangle_bounds(vertices: &[Vec3; 3]) -> Aabb as TriangleBoundsFn
+        => boxed(|| l09_acceleration::triangle_bounds(vertices));
+    fn transform_bounds(local: &Aabb, world_from_object: &Mat4) -> Aabb as TransformBoundsFn
+        => boxed(|| l09_acceleration::transform_bounds(local, world_from_object));
 }
 
 /// A box of the student's code, through `judge::student` as its corners.
@@ -29,48 +39,6 @@ fn boxed(f: impl FnOnce() -> Aabb) -> Aabb {
     Aabb::new(min, max)
 }
 
-/// `Aabb::union`, through `judge::student`.
-#[track_caller]
-pub(super) fn aabb_union(a: Aabb, b: Aabb) -> Aabb {
-    boxed(|| a.union(b))
-}
-
-/// `Aabb::union_point`, through `judge::student`.
-#[track_caller]
-pub(super) fn aabb_union_point(a: Aabb, p: Vec3) -> Aabb {
-    boxed(|| a.union_point(p))
-}
-
-/// `Aabb::hit`, through `judge::student`.
-#[track_caller]
-pub(super) fn aabb_hit(b: &Aabb, ray: &Ray, inv_dir: Vec3, range: Interval) -> Option<(Float, Float)> {
-    student(|| b.hit(ray, inv_dir, range))
-}
-
-/// `l09_acceleration::sphere_bounds`, through `judge::student`.
-#[track_caller]
-pub(super) fn sphere_bounds(center: Vec3, radius: Float) -> Aabb {
-    boxed(|| l09_acceleration::sphere_bounds(center, radius))
-}
-
-/// `l09_acceleration::triangle_bounds`, through `judge::student`.
-#[track_caller]
-pub(super) fn triangle_bounds(vertices: &[Vec3; 3]) -> Aabb {
-    boxed(|| l09_acceleration::triangle_bounds(vertices))
-}
-
-/// `l09_acceleration::transform_bounds`, through `judge::student`.
-#[track_caller]
-pub(super) fn transform_bounds(local: &Aabb, world_from_object: &Mat4) -> Aabb {
-    boxed(|| l09_acceleration::transform_bounds(local, world_from_object))
-}
-
-pub(super) type UnionFn = fn(Aabb, Aabb) -> Aabb;
-pub(super) type UnionPointFn = fn(Aabb, Vec3) -> Aabb;
-pub(super) type SlabFn = fn(&Aabb, &Ray, Vec3, Interval) -> Option<(Float, Float)>;
-pub(super) type SphereBoundsFn = fn(Vec3, Float) -> Aabb;
-pub(super) type TriangleBoundsFn = fn(&[Vec3; 3]) -> Aabb;
-pub(super) type TransformBoundsFn = fn(&Aabb, &Mat4) -> Aabb;
 pub(super) type ClosestFn = fn(&Bvh, &Ray, Interval) -> Option<Hit>;
 pub(super) type AnyFn = fn(&Bvh, &Ray, Interval) -> bool;
 

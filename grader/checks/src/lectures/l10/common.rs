@@ -25,21 +25,9 @@ crate::rows::student_fns! { l10_textures_sampling:
     fn fractal_noise(p: Vec3, octaves: u32) -> Float as FractalFn;
     fn marble(p: Vec3, octaves: u32, frequency: Float, amplitude: Float) -> Float as VeinFn;
     fn wood(p: Vec3, octaves: u32, frequency: Float, amplitude: Float) -> Float;
+    fn sample_offsets(pattern: Pattern, n: u32, rng: &mut Rng) -> Vec<Vec2> as SamplesFn
+        => crate::judge::drawn(rng, |rng| l10_textures_sampling::sample_offsets(pattern, n, rng));
 }
-
-/// `l10_textures_sampling::sample_offsets`, through `judge::student`: the offsets and the
-/// generator as the student's code left it (the check draws from it next).
-#[track_caller]
-pub(super) fn sample_offsets(pattern: Pattern, n: u32, rng: &mut Rng) -> Vec<Vec2> {
-    let (offsets, after) = crate::judge::student(|| {
-        let offsets = l10_textures_sampling::sample_offsets(pattern, n, rng);
-        (offsets, rng.clone())
-    });
-    *rng = after;
-    offsets
-}
-
-pub(super) type SamplesFn = fn(Pattern, u32, &mut Rng) -> Vec<Vec2>;
 pub(super) type SupersampleFn =
     fn(&World, &Camera, u32, u32, &TraceSettings, u32, Pattern, Filter, u64) -> (Image, RayStats);
 
