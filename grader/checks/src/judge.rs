@@ -25,12 +25,12 @@
 //! reports from how the subject ended. What the student's process can send
 //! is what the student's code could return: values, never a verdict.
 
-use std::cell::{Cell, RefCell};
+use std::cell::RefCell;
 use std::io::{BufReader, BufWriter, Read, Write};
 use std::net::{TcpListener, TcpStream};
 use std::panic::{AssertUnwindSafe, Location, catch_unwind, resume_unwind};
-use std::rc::Rc;
-use std::sync::Mutex;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::{Arc, Mutex};
 
 use serde::de::DeserializeOwned;
 use serde::{Deserialize, Serialize};
@@ -69,7 +69,7 @@ pub enum Role {
 /// [`student`] call's `f` (whose values are part of the outer one, not sent on their own).
 pub struct Subject {
     channel: Channel,
-    inside: Cell<bool>,
+    inside: AtomicBool,
 }
 
 /// The connection to the other process, buffered both ways: a check may send
@@ -102,7 +102,7 @@ impl Role {
         stream
             .write_all(&raylab_protocol::hello(token))
             .map_err(|e| format!("the judge at {address}: {e}"))?;
-        Ok(Role::Subject(Subject { channel: Channel::new(stream)?, inside: Cell::new(false) }))
+        Ok(Role::Subject(Subject { channel: Channel::new(stream)?, inside: AtomicBool::new(false) }))
     }
 
     /// The judge's role: listens on a loopback port, prints `listening ADDR` on stdout for the
@@ -164,15 +164,15 @@ pub fn drawn<T: Serialize + DeserializeOwned>(
 thread_local! {
     /// The role of the check running on this thread, for the length of [`enter`]; none outside
     /// one (the checks' own tests): local grading.
-    static ROLE: RefCell<Option<Rc<Role>>> = const { RefCell::new(None) };
+    static ROLE: RefCell<Option<Arc<Role>>> = const { RefCell::new(None) };
 }
 
 /// Runs `check` in `role`: the values, decisions and calls of the student's code it makes
 /// ([`student`], [`decide`], [`call`]) go where `role` says. Its value, or why it ended early
 /// ([`Ended`]: the process then ends, in `main`). Any other panic goes on (after the panic hook
 /// has recorded it).
-pub fn enter<T>(role: Role, check: impl FnOnce() -> T) -> Result<T, Ended> {
-    let outer = ROLE.replace(Some(Rc::new(role)));
+pub fn enter<T>(role: Arc<Role>, check: impl FnOnce() -> T) -> Result<T, Ended> {
+    let outer = ROLE.replace(Some(role));
     let result = catch_unwind(AssertUnwindSafe(check));
     ROLE.set(outer);
     match result {
@@ -185,8 +185,8 @@ pub fn enter<T>(role: Role, check: impl FnOnce() -> T) -> Result<T, Ended> {
 }
 
 /// The role of the check running on this thread.
-fn role() -> Rc<Role> {
-    ROLE.with_borrow(|role| role.clone()).unwrap_or_else(|| Rc::new(Role::Direct))
+fn role() -> Arc<Role> {
+    ROLE.with_borrow(|role| role.clone()).unwrap_or_else(|| Arc::new(Role::Direct))
 }
 
 /// Ends the check at once, up to [`enter`]: an unwind that the panic hook does not see (it is
@@ -210,11 +210,11 @@ pub fn student<T: Serialize + DeserializeOwned>(f: impl FnOnce() -> T) -> T {
     let at = Location::caller();
     match &*role() {
         Role::Direct => f(),
-        Role::Subject(subject) if subject.inside.get() => f(),
+        Role::Subject(subject) if subject.inside.load(Ordering::Relaxed) => f(),
         Role::Subject(subject) => {
-            subject.inside.set(true);
+            subject.inside.store(true, Ordering::Relaxed);
             let value = f();
-            subject.inside.set(false);
+            subject.inside.store(false, Ordering::Relaxed);
             send(&subject.channel, &site(at), &value, false);
             value
         }
@@ -278,13 +278,6 @@ fn write_frame(channel: &Channel, frame: &Frame, flush: bool) -> Result<(), ()> 
     let length = u32::try_from(bytes.len()).unwrap_or(u32::MAX).to_le_bytes();
     let written = stream.write_all(&length).and_then(|()| stream.write_all(&bytes));
     written.and_then(|()| if flush { stream.flush() } else { Ok(()) }).map_err(|_| ())
-}
-
-/// Sends what the subject has buffered: before it waits, and when its check ends.
-pub fn flush() {
-    if let Role::Subject(subject) = &*role() {
-        flush_channel(&subject.channel);
-    }
 }
 
 fn flush_channel(channel: &Channel) {
@@ -384,7 +377,7 @@ pub fn serve_calls(answer: impl Fn(&[u8]) -> Result<Vec<u8>, String>) -> Result<
                     return Ok(());
                 }
             }
-            Err(message) => report_panic(&message, file!(), line!()),
+            Err(message) => role.report_panic(&message, file!(), line!()),
         }
     }
 }
@@ -413,12 +406,23 @@ fn out_of_step(what: &str, judging: bool) -> ! {
     ))))
 }
 
-/// Tells the judge that the student's code panicked (the subject's panic hook). Called while
-/// panicking, it cannot end the check itself: a judge already gone is left to the panic.
-pub fn report_panic(message: &str, file: &str, line: u32) {
-    if let Role::Subject(subject) = &*role() {
-        let frame = Frame::Panic { message: message.to_owned(), file: file.to_owned(), line };
-        let _ = write_frame(&subject.channel, &frame, true);
+impl Role {
+    /// Sends what the subject has buffered: when its check ends (and before it waits: `read_frame`).
+    pub fn flush(&self) {
+        if let Role::Subject(subject) = self {
+            flush_channel(&subject.channel);
+        }
+    }
+
+    /// Tells the judge that the student's code panicked (the subject's panic hook, which holds
+    /// the role itself: the panic may be on any thread of the check, a renderer's worker too).
+    /// Called while panicking, it cannot end the check itself: a judge already gone is left to
+    /// the panic.
+    pub fn report_panic(&self, message: &str, file: &str, line: u32) {
+        if let Role::Subject(subject) = self {
+            let frame = Frame::Panic { message: message.to_owned(), file: file.to_owned(), line };
+            let _ = write_frame(&subject.channel, &frame, true);
+        }
     }
 }
 
@@ -430,13 +434,13 @@ mod tests {
     use std::thread;
 
     /// A subject's role and a judge's, connected.
-    fn pair() -> (Role, Role) {
+    fn pair() -> (Arc<Role>, Arc<Role>) {
         let listener = TcpListener::bind("127.0.0.1:0").unwrap();
         let client = TcpStream::connect(listener.local_addr().unwrap()).unwrap();
         let (server, _) = listener.accept().unwrap();
         let subject =
-            Role::Subject(Subject { channel: Channel::new(client).unwrap(), inside: Cell::new(false) });
-        (subject, Role::Judge(Channel::new(server).unwrap()))
+            Role::Subject(Subject { channel: Channel::new(client).unwrap(), inside: AtomicBool::new(false) });
+        (Arc::new(subject), Arc::new(Role::Judge(Channel::new(server).unwrap())))
     }
 
     /// A check: one value of the student's code, then a decision on it (the judge's).
@@ -450,11 +454,11 @@ mod tests {
 
     /// Runs `subject` and `judge` side by side in their roles; what each ended with.
     fn both<S: Send + 'static, J>(
-        subject: impl FnOnce() -> S + Send + 'static,
+        subject: impl FnOnce(&Role) -> S + Send + 'static,
         judge: impl FnOnce() -> J,
     ) -> (Result<S, Ended>, Result<J, Ended>) {
         let (subject_role, judge_role) = pair();
-        let subject = thread::spawn(move || enter(subject_role, subject));
+        let subject = thread::spawn(move || enter(subject_role.clone(), || subject(&subject_role)));
         let judged = enter(judge_role, judge);
         (subject.join().expect("the subject's thread"), judged)
     }
@@ -462,7 +466,7 @@ mod tests {
     #[test]
     fn the_judge_takes_the_subjects_value_and_the_subject_the_judges_decision() {
         let (subject, judged) = both(
-            || doubled(|| 21u64, |_| unreachable!("the subject makes no decision")),
+            |_| doubled(|| 21u64, |_| unreachable!("the subject makes no decision")),
             || doubled(|| -> u64 { unreachable!("the judge runs no student code") }, |x| 2 * x),
         );
         assert_eq!(subject.unwrap(), 42);
@@ -472,7 +476,7 @@ mod tests {
     #[test]
     fn a_value_of_another_type_fails_the_check_in_the_judge_and_ends_the_subject_without_a_verdict() {
         let (subject, judged) = both(
-            || doubled(|| u64::MAX, |_| unreachable!()),
+            |_| doubled(|| u64::MAX, |_| unreachable!()),
             || doubled(|| -> bool { unreachable!() }, u64::from),
         );
         // The judge concluded, so the subject, waiting for the decision, finds the channel closed.
@@ -482,9 +486,13 @@ mod tests {
     }
 
     #[test]
-    fn a_panic_the_subject_reports_is_the_judges_verdict() {
+    fn a_panic_the_subject_reports_is_the_judges_verdict_from_any_thread() {
+        // The panic hook holds the role: a renderer's worker thread, where no role was entered,
+        // reports its panic as the check's main thread does.
         let (_, judged) = both(
-            || report_panic("boom", "src/sphere.rs", 7),
+            |role| {
+                thread::scope(|s| s.spawn(|| role.report_panic("boom", "src/sphere.rs", 7)).join().unwrap())
+            },
             || doubled(|| -> u64 { unreachable!() }, |x| x),
         );
         let Err(Ended::Verdict(Outcome::Panicked { message, file, line })) = judged else {
@@ -495,7 +503,7 @@ mod tests {
 
     #[test]
     fn a_subject_that_stops_early_leaves_the_judge_without_a_verdict() {
-        let (subject, judged) = both(|| (), || doubled(|| -> u64 { unreachable!() }, |x| x));
+        let (subject, judged) = both(|_| (), || doubled(|| -> u64 { unreachable!() }, |x| x));
         assert!(subject.is_ok());
         assert!(matches!(judged, Err(Ended::Early)), "{judged:?}");
     }
@@ -503,8 +511,8 @@ mod tests {
     #[test]
     fn outside_a_role_and_directly_the_code_runs_in_place_and_a_panic_goes_on() {
         assert_eq!(doubled(|| 4u64, |x| x + 1), 5);
-        assert_eq!(enter(Role::Direct, || doubled(|| 4u64, |x| x + 1)).unwrap(), 5);
-        let panicked = catch_unwind(|| enter(Role::Direct, || panic!("the student's bug")));
+        assert_eq!(enter(Arc::new(Role::Direct), || doubled(|| 4u64, |x| x + 1)).unwrap(), 5);
+        let panicked = catch_unwind(|| enter(Arc::new(Role::Direct), || panic!("the student's bug")));
         let payload = panicked.expect_err("the panic goes on");
         assert_eq!(payload.downcast_ref::<&str>(), Some(&"the student's bug"));
         // The role ends with its check.

@@ -39,6 +39,7 @@ mod view3d;
 
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
+use std::sync::Arc;
 
 use clap::{Parser, Subcommand};
 
@@ -119,17 +120,19 @@ fn main() -> ExitCode {
             // Connected before any student code runs: the judge takes the first connection.
             (Some(address), _) => {
                 subject_limits();
-                token()
-                    .and_then(|token| Role::subject(&address, token))
-                    .and_then(|role| run(&id, VerdictTo::Judge, &out, role))
+                token().and_then(|token| Role::subject(&address, token)).and_then(|role| {
+                    let role = Arc::new(role);
+                    run(&id, VerdictTo::Judge(role.clone()), &out, role)
+                })
             }
-            (None, Some(file)) => run(&id, VerdictTo::File(file), &out, Role::Direct),
+            (None, Some(file)) => run(&id, VerdictTo::File(file), &out, Arc::new(Role::Direct)),
             (None, None) => Err("--verdict FILE or --channel ADDR".into()),
         },
         Command::Serve { channel } => {
             subject_limits();
             token().and_then(|token| Role::subject(&channel, token)).and_then(|role| {
-                install_panic_hook(Box::leak(Box::new(VerdictTo::Judge)));
+                let role = Arc::new(role);
+                install_panic_hook(Box::leak(Box::new(VerdictTo::Judge(role.clone()))));
                 match judge::enter(role, || {
                     judge::serve_calls(|call| remote::answer_encoded(lectures::ANSWERS, call))
                 }) {
@@ -141,7 +144,7 @@ fn main() -> ExitCode {
         Command::Judge { id, out } => {
             platform::keep_others_out();
             token().and_then(Role::judge).and_then(|role| match role {
-                Some(role) => run(&id, VerdictTo::Stdout, &out, role),
+                Some(role) => run(&id, VerdictTo::Stdout, &out, Arc::new(role)),
                 // The subject ended without connecting: how it ended is the verdict.
                 None => Ok(no_verdict()),
             })
@@ -197,8 +200,9 @@ enum VerdictTo {
     File(PathBuf),
     /// The judge's stdout, as a `verdict JSON` line (`judge`).
     Stdout,
-    /// Nowhere: a subject (`run --channel`) reports values, never a verdict.
-    Judge,
+    /// Nowhere: a subject (`run --channel`) reports values, never a verdict (its role's channel
+    /// takes its last values, and a panic: the panic hook holds it).
+    Judge(Arc<Role>),
 }
 
 impl VerdictTo {
@@ -210,8 +214,8 @@ impl VerdictTo {
             }
             VerdictTo::Stdout => judge::print_verdict(&json),
             // The subject's last values, sent: the judge writes the verdict.
-            VerdictTo::Judge => {
-                judge::flush();
+            VerdictTo::Judge(role) => {
+                role.flush();
                 Ok(())
             }
         }
@@ -222,7 +226,7 @@ impl VerdictTo {
 /// grader tells `todo!()` from other panics by its message), then the outcome replaces it when
 /// the check returns. A subject reports the panic to its judge instead, and writes nothing. A
 /// check that ends early (the judge's verdict reached, or the other process gone) ends here.
-fn run(id: &str, verdict: VerdictTo, out: &Path, role: Role) -> Result<ExitCode, String> {
+fn run(id: &str, verdict: VerdictTo, out: &Path, role: Arc<Role>) -> Result<ExitCode, String> {
     // The panic hook holds it for the life of the process (a process per check).
     let verdict: &'static VerdictTo = Box::leak(Box::new(verdict));
     install_panic_hook(verdict);
@@ -256,7 +260,7 @@ fn install_panic_hook(verdict: &'static VerdictTo) {
             .unwrap_or_else(|| "(a panic without a message)".to_owned());
         let (path, line) = info.location().map_or((String::new(), 0), |l| (l.file().to_owned(), l.line()));
         match verdict {
-            VerdictTo::Judge => judge::report_panic(&message, &path, line),
+            VerdictTo::Judge(role) => role.report_panic(&message, &path, line),
             to => {
                 let _ = to.write(&check::Outcome::Panicked { message, file: path, line });
             }
