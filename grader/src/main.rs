@@ -8,6 +8,9 @@
 //! lecture that does not compile, or student code that panics, loops or
 //! aborts, costs its own checks and never the grading.
 
+// INSTRUCTOR BEGIN
+mod class;
+// INSTRUCTOR END
 mod compile;
 mod grade;
 mod handout;
@@ -134,6 +137,9 @@ enum Cmd {
         args: Vec<String>,
     },
     // INSTRUCTOR BEGIN
+    /// Grade a whole class: every submission folder in SUBMISSIONS as `grade --submission` grades
+    /// it; per student results.json and grade.json, and gradebook.csv, in DIR.
+    Class(class::ClassArgs),
     /// Speed against accuracy, side by side (run with --release).
     #[command(disable_help_flag = true)]
     Tradeoffs {
@@ -208,6 +214,7 @@ fn main() -> ExitCode {
         // INSTRUCTOR BEGIN
         Some(Cmd::Tradeoffs { args }) => forward("tradeoffs", &args),
         Some(Cmd::Dev { command: DevCmd::Sync { check } }) => sync::sync(&workspace::own_root(), check),
+        Some(Cmd::Class(args)) => class::command(&args, &options()),
         // INSTRUCTOR END
     };
     match result {

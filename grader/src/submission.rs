@@ -186,6 +186,22 @@ pub fn judge(root: &Path, options: &crate::grade::GradeOptions) -> Result<PathBu
     Ok(built.binary)
 }
 
+// INSTRUCTOR BEGIN
+/// Every file of `submission`'s lectures' sources (what a grade of it takes), in a fixed order.
+pub fn lecture_files(submission: &Path) -> Result<Vec<PathBuf>, String> {
+    let lectures = find_lectures(submission)?;
+    let mut files = Vec::new();
+    for entry in std::fs::read_dir(&lectures).map_err(|e| format!("{}: {e}", lectures.display()))? {
+        let source = entry.map_err(|e| e.to_string())?.path().join("src");
+        if source.is_dir() {
+            files.extend(walk(&source)?);
+        }
+    }
+    files.sort();
+    Ok(files)
+}
+// INSTRUCTOR END
+
 /// The folder of `submission` that holds the lecture folders: its
 /// `lectures/`, or that of its one subfolder that has one (an unpacked zip).
 fn find_lectures(submission: &Path) -> Result<PathBuf, String> {

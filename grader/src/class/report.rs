@@ -1,0 +1,229 @@
+// INSTRUCTOR ONLY: left out of the handout, with the rest of `grader class`.
+//! `DIR/class.html`: what a class gets wrong, for the next lecture. One page, offline, no script:
+//!
+//! - first, the checks the most students fail, each with its causes (the checks' "likely: …"),
+//!   how many students each, and who;
+//! - then, per lecture and exercise in course order, how many students passed, failed, did not
+//!   start, were blocked or crashed (a heat map: each cell shaded by its share of the class);
+//! - last, the submissions that could not be graded, and why.
+
+use std::collections::BTreeMap;
+use std::fmt::Write;
+
+use super::StudentGrade;
+use crate::report::escape;
+
+/// The outcomes a heat map's columns count, in order, with their cells' colours.
+const COLUMNS: [(&str, &str); 5] = [
+    ("passed", "#2e7d32"),
+    ("failed", "#c62828"),
+    ("not started", "#757575"),
+    ("blocked", "#ef6c00"),
+    ("crashed, timed out, does not compile", "#6a1b9a"),
+];
+
+/// The column of a check's status.
+fn column(status: &str) -> usize {
+    match status {
+        "passed" => 0,
+        "FAILED" => 1,
+        "not started" => 2,
+        "blocked" => 3,
+        _ => 4,
+    }
+}
+
+/// The page for `grades` (every student's, graded or not).
+pub fn html(grades: &[StudentGrade]) -> String {
+    let graded: Vec<&StudentGrade> = grades.iter().filter(|g| g.error.is_none()).collect();
+    let mut page = String::new();
+    let _ = write!(
+        page,
+        "<!doctype html><html lang=\"en\"><head><meta charset=\"utf-8\"><title>raylab: the class</title>\
+         <style>{STYLE}</style></head><body><h1>The class</h1><p>{} submissions, {} graded.</p>",
+        grades.len(),
+        graded.len()
+    );
+    causes(&mut page, &graded);
+    heat_map(&mut page, &graded);
+    let not_graded: Vec<&StudentGrade> = grades.iter().filter(|g| g.error.is_some()).collect();
+    if !not_graded.is_empty() {
+        page.push_str("<h2 id=\"not-graded\">Not graded</h2><ul>");
+        for g in not_graded {
+            let _ = write!(
+                page,
+                "<li><b>{}</b>: {}</li>",
+                escape(&g.student),
+                escape(g.error.as_deref().unwrap_or_default())
+            );
+        }
+        page.push_str("</ul>");
+    }
+    page.push_str("</body></html>\n");
+    page
+}
+
+/// A failed check's causes: each with the students whose failure names it.
+type Causes<'a> = BTreeMap<&'a str, Vec<&'a str>>;
+
+/// The checks failed by the most students, most first, each with its causes.
+fn causes(page: &mut String, graded: &[&StudentGrade]) {
+    let mut failed: BTreeMap<&str, Causes> = BTreeMap::new();
+    for g in graded {
+        for c in g.checks.iter().filter(|c| c.status == "FAILED") {
+            let cause = c.cause.as_deref().unwrap_or("(no cause named)");
+            failed.entry(&c.id).or_default().entry(cause).or_default().push(&g.student);
+        }
+    }
+    let mut checks: Vec<(&str, usize, &Causes)> =
+        failed.iter().map(|(id, causes)| (*id, causes.values().map(Vec::len).sum(), causes)).collect();
+    checks.sort_by(|a, b| b.1.cmp(&a.1).then(a.0.cmp(b.0)));
+    page.push_str("<h2 id=\"causes\">What the class gets wrong</h2>");
+    if checks.is_empty() {
+        page.push_str("<p>No check failed.</p>");
+        return;
+    }
+    page.push_str(
+        "<table class=\"causes\"><tr><th>check</th><th>students</th><th>likely cause</th><th>who</th></tr>",
+    );
+    for (id, count, causes) in checks {
+        let mut causes: Vec<(&&str, &Vec<&str>)> = causes.iter().collect();
+        causes.sort_by(|a, b| b.1.len().cmp(&a.1.len()).then(a.0.cmp(b.0)));
+        for (i, (cause, students)) in causes.iter().enumerate() {
+            let head = if i == 0 {
+                format!(
+                    "<td rowspan=\"{}\" class=\"id\">{}</td><td rowspan=\"{}\" class=\"n\">{count} of {}</td>",
+                    causes.len(),
+                    escape(id),
+                    causes.len(),
+                    graded.len()
+                )
+            } else {
+                String::new()
+            };
+            let _ = write!(
+                page,
+                "<tr data-check=\"{}\">{head}<td>{} <span class=\"n\">({})</span></td><td>{}</td></tr>",
+                escape(id),
+                escape(cause),
+                students.len(),
+                escape(&students.join(", "))
+            );
+        }
+    }
+    page.push_str("</table>");
+}
+
+/// Per exercise, in course order, how many students' checks of it ended each way: an exercise
+/// is passed when all its checks pass, and otherwise counts as its first check that did not.
+fn heat_map(page: &mut String, graded: &[&StudentGrade]) {
+    let mut order: Vec<&str> = Vec::new();
+    let mut counts: BTreeMap<&str, [usize; 5]> = BTreeMap::new();
+    for g in graded {
+        let mut by_exercise: BTreeMap<&str, usize> = BTreeMap::new();
+        for c in &g.checks {
+            if !order.contains(&c.exercise.as_str()) {
+                order.push(&c.exercise);
+            }
+            let worst = by_exercise.entry(&c.exercise).or_insert(0);
+            if *worst == 0 {
+                *worst = column(&c.status);
+            }
+        }
+        for (exercise, col) in by_exercise {
+            counts.entry(exercise).or_default()[col] += 1;
+        }
+    }
+    page.push_str(
+        "<h2 id=\"exercises\">Exercise by exercise</h2><table class=\"heat\"><tr><th>exercise</th>",
+    );
+    for (name, _) in COLUMNS {
+        let _ = write!(page, "<th>{name}</th>");
+    }
+    page.push_str("</tr>");
+    let total = graded.len().max(1);
+    for exercise in order {
+        let row = counts.get(exercise).copied().unwrap_or_default();
+        let _ = write!(
+            page,
+            "<tr data-exercise=\"{}\"><td class=\"id\">{}</td>",
+            escape(exercise),
+            escape(exercise)
+        );
+        for (n, (_, colour)) in row.iter().zip(COLUMNS) {
+            // The cell's shade is its share of the class: a glance finds the exercises to revisit.
+            let alpha = (*n as f64 / total as f64 * 0.85 + if *n > 0 { 0.15 } else { 0.0 }).min(1.0);
+            let _ = write!(
+                page,
+                "<td class=\"n\" style=\"background: color-mix(in srgb, {colour} {:.0}%, white)\">{n}</td>",
+                alpha * 100.0
+            );
+        }
+        page.push_str("</tr>");
+    }
+    page.push_str("</table>");
+}
+
+const STYLE: &str = "body{font:15px/1.4 system-ui,sans-serif;margin:2em;color:#222}\
+table{border-collapse:collapse;margin:1em 0}td,th{border:1px solid #ccc;padding:.25em .6em;vertical-align:top}\
+th{background:#f4f4f4;text-align:left}.id{font-family:ui-monospace,monospace;white-space:nowrap}\
+.n{text-align:right;font-variant-numeric:tabular-nums}";
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::class::CheckGrade;
+
+    fn check(id: &str, status: &str, cause: Option<&str>) -> CheckGrade {
+        let exercise = id.rsplit_once('/').map_or(id, |(e, _)| e).to_owned();
+        let points = u32::from(status == "passed");
+        let cause = cause.map(str::to_owned);
+        CheckGrade { id: id.into(), exercise, points, max_points: 1, status: status.into(), cause }
+    }
+
+    fn student(name: &str, checks: Vec<CheckGrade>) -> StudentGrade {
+        StudentGrade {
+            student: name.into(),
+            fingerprint: String::new(),
+            score: checks.iter().map(|c| c.points).sum(),
+            max_score: checks.len() as u32,
+            seconds: 0.0,
+            error: None,
+            checks,
+        }
+    }
+
+    #[test]
+    fn the_most_failed_check_comes_first_with_its_causes_and_students() {
+        let far = Some("the far root");
+        let grades = [
+            student(
+                "ann",
+                vec![check("02/sphere/unit", "FAILED", far), check("02/plane/unit", "passed", None)],
+            ),
+            student(
+                "ben",
+                vec![check("02/sphere/unit", "FAILED", far), check("02/plane/unit", "FAILED", Some("n·d"))],
+            ),
+            student(
+                "cy <3",
+                vec![
+                    check("02/sphere/unit", "FAILED", Some("t < 0")),
+                    check("02/plane/unit", "not started", None),
+                ],
+            ),
+        ];
+        let page = html(&grades);
+        let sphere = page.find("data-check=\"02/sphere/unit\"").unwrap();
+        let plane = page.find("data-check=\"02/plane/unit\"").unwrap();
+        assert!(sphere < plane, "the check three students fail comes before the one one student fails");
+        assert!(page.contains("3 of 3"), "{page}");
+        assert!(page.contains("the far root <span class=\"n\">(2)</span></td><td>ann, ben</td>"), "{page}");
+        assert!(page.contains("cy &lt;3"), "names are escaped");
+        // The heat map: 02/plane passed by one, failed by one, not started by one.
+        let row = &page[page.find("data-exercise=\"02/plane\"").unwrap()..];
+        let cells: Vec<&str> =
+            row.split("white)\">").skip(1).take(5).map(|c| c.split('<').next().unwrap()).collect();
+        assert_eq!(cells, ["1", "1", "1", "0", "0"], "{row}");
+    }
+}

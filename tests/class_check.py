@@ -1,0 +1,91 @@
+#!/usr/bin/env python3
+"""Opens `grader class`'s class.html in headless Chromium (stdlib only; the DevTools client of
+book/browsercheck.py) and checks what an instructor reads first:
+  - the page lays out: the table of what the class gets wrong, its first row the check named by
+    --first (the one most students fail), with a cause and the students' names;
+  - the heat map has a row per exercise graded, each row's counts summing to the students graded;
+  - nothing is requested but file:// (or data:): the page works offline.
+Usage: python3 tests/class_check.py CLASS.html --first CHECK --students N [--chromium PATH]
+Exit status 0 when it passes, 1 naming each failure, 2 when Chromium is missing.
+"""
+import argparse
+import json
+import pathlib
+import shutil
+import sys
+import tempfile
+import time
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent / "book"))
+from browsercheck import TIMEOUT, Chromium  # noqa: E402
+
+PROBE = r"""
+(() => {
+  const first = document.querySelector('table.causes tr[data-check]');
+  const rows = [...document.querySelectorAll('table.heat tr[data-exercise]')].map(r =>
+    [...r.querySelectorAll('td.n')].map(td => Number(td.textContent)).reduce((a, b) => a + b, 0));
+  const box = first ? first.getBoundingClientRect() : null;
+  return JSON.stringify({
+    first: first ? first.dataset.check : null,
+    firstText: first ? first.textContent : '',
+    firstShown: !!box && box.width > 0 && box.height > 0 && box.top < window.innerHeight,
+    sums: rows,
+  });
+})()
+"""
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("page")
+    parser.add_argument("--first", required=True)
+    parser.add_argument("--students", type=int, required=True)
+    parser.add_argument("--chromium")
+    args = parser.parse_args()
+    chromium = args.chromium or shutil.which("chromium") or shutil.which("chromium-browser")
+    if not chromium:
+        print("SKIPPED: no Chromium on this machine (apt install chromium)")
+        return 2
+    url = pathlib.Path(args.page).resolve().as_uri()
+    with tempfile.TemporaryDirectory() as profile:
+        browser = Chromium(chromium, profile)
+        try:
+            deadline = time.monotonic() + TIMEOUT
+            target = browser.send("Target.createTarget", {"url": "about:blank"}, deadline=deadline)["targetId"]
+            session = browser.send("Target.attachToTarget", {"targetId": target, "flatten": True},
+                                   deadline=deadline)["sessionId"]
+            for domain in ("Page", "Network", "Runtime"):
+                browser.send(f"{domain}.enable", session=session, deadline=deadline)
+            browser.events.clear()
+            browser.send("Page.navigate", {"url": url}, session=session, deadline=deadline)
+            browser.wait_for("Page.loadEventFired", session, deadline)
+            result = browser.send("Runtime.evaluate", {"expression": PROBE, "returnByValue": True},
+                                  session=session, deadline=deadline)
+            if "exceptionDetails" in result:
+                print(f"the probe failed: {result['exceptionDetails'].get('text')}")
+                return 1
+            r = json.loads(result["result"]["value"])
+            failures = []
+            if r["first"] != args.first:
+                failures.append(f"the first row of what the class gets wrong is {r['first']}, not {args.first}")
+            if not r["firstShown"]:
+                failures.append("the first row is not on the first screen")
+            if not r["sums"]:
+                failures.append("no exercise in the heat map")
+            failures += [f"a heat-map row counts {s} students, not {args.students}" for s in r["sums"]
+                         if s != args.students]
+            for event in browser.events:
+                if event.get("method") == "Network.requestWillBeSent":
+                    scheme = event["params"]["request"]["url"].split(":", 1)[0]
+                    if scheme not in ("file", "data"):
+                        failures.append(f"the page requested {event['params']['request']['url']}")
+            print(f"class page: first {r['first']} ({r['firstText'][:80]!r}), {len(r['sums'])} exercises")
+            for f in failures:
+                print(f"FAILED: {f}")
+            return 1 if failures else 0
+        finally:
+            browser.close()
+
+
+if __name__ == "__main__":
+    sys.exit(main())
