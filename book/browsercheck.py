@@ -89,6 +89,7 @@ class Chromium:
         self.buffer = b""
         self.next_id = 0
         self.events = []
+        self.targets = {}  # a tab's target, by its session (`open`)
 
     def send(self, method, params=None, session=None, deadline=None):
         """Sends a command and returns its result; events that arrive meanwhile are kept."""
@@ -127,6 +128,29 @@ class Chromium:
                     return event
             self.events.append(self.receive(deadline))
 
+    def open(self, url, deadline, viewport=None):
+        """A new tab with the Page, Network and Runtime events on (and a `viewport` of
+        (width, height), if given), `url` loaded in it; its session. Events kept from here on."""
+        target = self.send("Target.createTarget", {"url": "about:blank"}, deadline=deadline)["targetId"]
+        session = self.send("Target.attachToTarget", {"targetId": target, "flatten": True},
+                            deadline=deadline)["sessionId"]
+        for domain in ("Page", "Network", "Runtime"):
+            self.send(f"{domain}.enable", session=session, deadline=deadline)
+        if viewport:
+            self.send("Emulation.setDeviceMetricsOverride", {"width": viewport[0], "height": viewport[1],
+                      "deviceScaleFactor": 1, "mobile": False}, session=session, deadline=deadline)
+        self.targets[session] = target
+        self.events.clear()
+        self.send("Page.navigate", {"url": url}, session=session, deadline=deadline)
+        self.wait_for("Page.loadEventFired", session, deadline)
+        return session
+
+    def requests_elsewhere(self):
+        """Every request the pages made to anything but file:// or data: (offline pages make none)."""
+        return [e["params"]["request"]["url"] for e in self.events
+                if e.get("method") == "Network.requestWillBeSent"
+                and not e["params"]["request"]["url"].startswith(("file:", "data:"))]
+
     def close(self):
         try:
             self.send("Browser.close", deadline=time.monotonic() + 5)
@@ -144,15 +168,7 @@ class Chromium:
 def check_page(browser, url):
     """The failures of one page (an empty list when it passes)."""
     deadline = time.monotonic() + TIMEOUT
-    target = browser.send("Target.createTarget", {"url": "about:blank"}, deadline=deadline)["targetId"]
-    session = browser.send(
-        "Target.attachToTarget", {"targetId": target, "flatten": True}, deadline=deadline
-    )["sessionId"]
-    for domain in ("Page", "Network", "Runtime"):
-        browser.send(f"{domain}.enable", session=session, deadline=deadline)
-    browser.events.clear()
-    browser.send("Page.navigate", {"url": url}, session=session, deadline=deadline)
-    browser.wait_for("Page.loadEventFired", session, deadline)
+    session = browser.open(url, deadline)
     result = browser.send(
         "Runtime.evaluate",
         {"expression": PROBE, "awaitPromise": True, "returnByValue": True},
@@ -197,7 +213,7 @@ def check_page(browser, url):
         f"  {r['katex']} formulas, {r['images']} images, KaTeX fonts loaded: "
         f"{', '.join(sorted(set(r['loadedKatexFaces']))) or 'none'}"
     )
-    browser.send("Target.closeTarget", {"targetId": target}, deadline=deadline)
+    browser.send("Target.closeTarget", {"targetId": browser.targets[session]}, deadline=deadline)
     return failures
 
 

@@ -51,14 +51,7 @@ def main():
         browser = Chromium(chromium, profile)
         try:
             deadline = time.monotonic() + TIMEOUT
-            target = browser.send("Target.createTarget", {"url": "about:blank"}, deadline=deadline)["targetId"]
-            session = browser.send("Target.attachToTarget", {"targetId": target, "flatten": True},
-                                   deadline=deadline)["sessionId"]
-            for domain in ("Page", "Network", "Runtime"):
-                browser.send(f"{domain}.enable", session=session, deadline=deadline)
-            browser.events.clear()
-            browser.send("Page.navigate", {"url": url}, session=session, deadline=deadline)
-            browser.wait_for("Page.loadEventFired", session, deadline)
+            session = browser.open(url, deadline)
             result = browser.send("Runtime.evaluate", {"expression": PROBE, "returnByValue": True},
                                   session=session, deadline=deadline)
             if "exceptionDetails" in result:
@@ -74,11 +67,7 @@ def main():
                 failures.append("no exercise in the heat map")
             failures += [f"a heat-map row counts {s} students, not {args.students}" for s in r["sums"]
                          if s != args.students]
-            for event in browser.events:
-                if event.get("method") == "Network.requestWillBeSent":
-                    scheme = event["params"]["request"]["url"].split(":", 1)[0]
-                    if scheme not in ("file", "data"):
-                        failures.append(f"the page requested {event['params']['request']['url']}")
+            failures += [f"the page requested {url}" for url in browser.requests_elsewhere()]
             print(f"class page: first {r['first']} ({r['firstText'][:80]!r}), {len(r['sums'])} exercises")
             for f in failures:
                 print(f"FAILED: {f}")

@@ -103,14 +103,7 @@ def main():
         browser = Chromium(args.chromium, profile)
         try:
             deadline = time.monotonic() + TIMEOUT
-            target = browser.send("Target.createTarget", {"url": "about:blank"}, deadline=deadline)["targetId"]
-            session = browser.send("Target.attachToTarget", {"targetId": target, "flatten": True},
-                                   deadline=deadline)["sessionId"]
-            for domain in ("Page", "Network", "Runtime"):
-                browser.send(f"{domain}.enable", session=session, deadline=deadline)
-            browser.events.clear()
-            browser.send("Page.navigate", {"url": url}, session=session, deadline=deadline)
-            browser.wait_for("Page.loadEventFired", session, deadline)
+            session = browser.open(url, deadline)
             result = browser.send("Runtime.evaluate", {"expression": PROBE, "awaitPromise": True,
                                                        "returnByValue": True}, session=session, deadline=deadline)
             if "exceptionDetails" in result:
@@ -135,11 +128,7 @@ def main():
                     failures.append(f"the 3D view's canvas drew {v['drawn']} pixels not background")
                 elif v["pixelAfter"] == v["pixelBefore"] or not v["textChanged"] or v["changed"] < 50:
                     failures.append(f"a click on 'yours' did not change the trees drawn: {v}")
-            for event in browser.events:
-                if event.get("method") == "Network.requestWillBeSent":
-                    scheme = event["params"]["request"]["url"].split(":", 1)[0]
-                    if scheme not in ("file", "data"):
-                        failures.append(f"the page requested {event['params']['request']['url']}")
+            failures += [f"the page requested {url}" for url in browser.requests_elsewhere()]
             print(f"report: {r['images']} images, {r['failed']} failed rows, {r['trees']} ray trees, "
                   f"{r['views']} 3D views; click: {r['picked']}")
             if v is not None and v.get("loaded"):

@@ -112,16 +112,7 @@ def main():
         browser = Chromium(args.chromium, profile)
         try:
             deadline = time.monotonic() + TIMEOUT
-            target = browser.send("Target.createTarget", {"url": "about:blank"}, deadline=deadline)["targetId"]
-            session = browser.send("Target.attachToTarget", {"targetId": target, "flatten": True},
-                                   deadline=deadline)["sessionId"]
-            for domain in ("Page", "Network", "Runtime"):
-                browser.send(f"{domain}.enable", session=session, deadline=deadline)
-            browser.send("Emulation.setDeviceMetricsOverride", {"width": 900, "height": 900,
-                         "deviceScaleFactor": 1, "mobile": False}, session=session, deadline=deadline)
-            browser.events.clear()
-            browser.send("Page.navigate", {"url": url}, session=session, deadline=deadline)
-            browser.wait_for("Page.loadEventFired", session, deadline)
+            session = browser.open(url, deadline, viewport=(900, 900))
             if args.screenshot:
                 # The canvas alone, as a student first sees it: before the probe's clicks and drag.
                 box = browser.send("Runtime.evaluate", {
@@ -160,11 +151,7 @@ def main():
             for text in r["treeTexts"]:
                 if not any(text in shown for shown in r["texts"]):
                     failures.append("a tree's text is not on the page")
-            for event in browser.events:
-                if event.get("method") == "Network.requestWillBeSent":
-                    request = event["params"]["request"]["url"]
-                    if not request.startswith(("file://", "data:")):
-                        failures.append(f"a request left the page: {request}")
+            failures += [f"a request left the page: {request}" for request in browser.requests_elsewhere()]
             print(json.dumps({k: r[k] for k in ("rays", "kinds", "hashes", "trees", "objects")}))
             for failure in failures:
                 print(f"FAILED: {failure}")
