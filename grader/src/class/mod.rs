@@ -153,13 +153,20 @@ pub fn class(root: &Path, options: &ClassOptions, base: &GradeOptions) -> Result
     let class = Class { root, judge: &judge, judge_print: &judge_print, options, base, jobs: per_job };
     let queue = Mutex::new(students.iter());
     let grades: Mutex<Vec<StudentGrade>> = Mutex::new(Vec::new());
+    // On a terminal, a bar of the submissions graded and the time left; each submission's line
+    // above it (and alone where there is no terminal).
+    let bar = indicatif::ProgressBar::new(students.len() as u64);
+    bar.set_style(
+        indicatif::ProgressStyle::with_template("grading {bar:40} {pos}/{len} submissions, {eta} left")
+            .map_err(|e| e.to_string())?,
+    );
     let done = Mutex::new(0usize);
     let started = Instant::now();
     std::thread::scope(|scope| {
         for worker in 0..parallel {
             let users: Vec<RunAs> = options.run_as.iter().skip(worker).step_by(parallel).cloned().collect();
             let work = if parallel == 1 { workdir.clone() } else { workdir.join(format!("{worker}")) };
-            let (queue, grades, done, class) = (&queue, &grades, &done, &class);
+            let (queue, grades, done, class, bar) = (&queue, &grades, &done, &class, &bar);
             let total = students.len();
             scope.spawn(move || {
                 while let Some((name, path)) = queue.lock().ok().and_then(|mut q| q.next()) {
@@ -174,7 +181,8 @@ pub fn class(root: &Path, options: &ClassOptions, base: &GradeOptions) -> Result
                         (None, true) => format!("{score}/{max} points, unchanged since its last grade"),
                         (None, false) => format!("{score}/{max} points in {:.1} s", grade.seconds),
                     };
-                    eprintln!("[{}/{total}] {name}: {said}", count.unwrap_or(0));
+                    bar.suspend(|| eprintln!("[{}/{total}] {name}: {said}", count.unwrap_or(0)));
+                    bar.inc(1);
                     if let Ok(mut grades) = grades.lock() {
                         grades.push(grade);
                     }
@@ -182,6 +190,7 @@ pub fn class(root: &Path, options: &ClassOptions, base: &GradeOptions) -> Result
             });
         }
     });
+    bar.finish_and_clear();
     let mut grades = grades.into_inner().map_err(|_| "a grading thread panicked")?;
     grades.sort_by(|a, b| a.student.cmp(&b.student));
     let csv = options.out.join("gradebook.csv");
