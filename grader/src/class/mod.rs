@@ -209,13 +209,15 @@ pub fn class(root: &Path, options: &ClassOptions, base: &GradeOptions) -> Result
     Ok(true)
 }
 
-/// The submissions: every folder of `dir`, by name.
+/// The submissions: every folder of `dir`, by name, but hidden ones and the `__MACOSX` folder an
+/// archive made on a Mac holds (no student's).
 fn discover(dir: &Path) -> Result<Vec<(String, PathBuf)>, String> {
     let mut students = Vec::new();
     for entry in std::fs::read_dir(dir).map_err(|e| format!("{}: {e}", dir.display()))? {
         let entry = entry.map_err(|e| format!("{}: {e}", dir.display()))?;
-        if entry.file_type().is_ok_and(|t| t.is_dir()) {
-            students.push((entry.file_name().to_string_lossy().into_owned(), entry.path()));
+        let name = entry.file_name().to_string_lossy().into_owned();
+        if entry.file_type().is_ok_and(|t| t.is_dir()) && !name.starts_with('.') && name != "__MACOSX" {
+            students.push((name, entry.path()));
         }
     }
     students.sort();
@@ -385,6 +387,18 @@ mod tests {
     fn check(id: &str, points: u32, max_points: u32) -> CheckGrade {
         let exercise = id.rsplit_once('/').map_or(id, |(e, _)| e).to_owned();
         CheckGrade { id: id.into(), exercise, points, max_points, status: "passed".into(), cause: None }
+    }
+
+    #[test]
+    fn every_folder_is_a_student_but_hidden_ones_and_an_archives_mac_folder() {
+        let dir = std::env::temp_dir().join(format!("raylab-class-{}", std::process::id()));
+        for folder in ["zoe", "ada", ".git", "__MACOSX"] {
+            std::fs::create_dir_all(dir.join(folder)).unwrap();
+        }
+        std::fs::write(dir.join("notes.txt"), "not a submission").unwrap();
+        let names: Vec<String> = discover(&dir).unwrap().into_iter().map(|(name, _)| name).collect();
+        assert_eq!(names, ["ada", "zoe"]);
+        std::fs::remove_dir_all(&dir).unwrap();
     }
 
     #[test]
