@@ -365,19 +365,7 @@ fn chaos_ends_in_the_right_verdicts() {
     // The report of this grade opens offline in a browser, images, ray tree and all; the failed
     // stage-10 scene (10/image/checker-aliasing-16spp) has its 3D view.
     let report = scratch().join("work/target/grader/report.html");
-    let out = Command::new("python3")
-        .arg(root().join("tests/report_check.py"))
-        .arg(&report)
-        .arg("--expect-view")
-        .output()
-        .unwrap();
-    let said = String::from_utf8_lossy(&out.stdout);
-    match out.status.code() {
-        Some(0) => println!("{said}"),
-        // No Chromium on this machine: said loudly; CI installs it, so there it fails.
-        Some(2) if std::env::var_os("CI").is_none() => println!("{said}"),
-        _ => panic!("the report's browser check failed:\n{said}{}", String::from_utf8_lossy(&out.stderr)),
-    }
+    browser_check("tests/report_check.py", &[report.to_str().unwrap(), "--expect-view"]);
 }
 
 #[test]
@@ -568,6 +556,19 @@ fn render_at_week(week: usize, lectures: &[String]) -> Vec<String> {
     problems
 }
 
+/// Runs a page's browser check (`python3 SCRIPT ARGS`, headless Chromium): passes or panics with
+/// what it said. Without Chromium (its exit status 2) it says so loudly and passes, but not in CI,
+/// which installs Chromium.
+pub fn browser_check(script: &str, args: &[&str]) {
+    let out = Command::new("python3").arg(root().join(script)).args(args).output().unwrap();
+    let said = String::from_utf8_lossy(&out.stdout);
+    match out.status.code() {
+        Some(0) => println!("{said}"),
+        Some(2) if std::env::var_os("CI").is_none() => println!("{said}"),
+        _ => panic!("{script} failed:\n{said}{}", String::from_utf8_lossy(&out.stderr)),
+    }
+}
+
 /// A class graded at once (`grader class`): each student's total in the gradebook is their
 /// single grade (`grade --submission`), a catalogued mistake costs its student the check that
 /// catches it and no one else anything, a folder without `lectures/` is a row that says why, and
@@ -623,21 +624,11 @@ fn a_class_is_graded_into_a_gradebook_of_the_single_grades() {
     assert!(gradebook.lines().any(|l| l.starts_with("carol,0,0,") && l.contains("has no lectures/ folder")));
     assert!(out.join("students/bob/results.json").is_file(), "Gradescope's results per student");
     // The class's page, in a browser: bob's mistake is what the class gets wrong first.
-    let page = Command::new("python3")
-        .arg(root().join("tests/class_check.py"))
-        .arg(out.join("class.html"))
-        .args(["--first", &mistake.caught_by, "--students", "2"])
-        .output()
-        .unwrap();
-    let said = String::from_utf8_lossy(&page.stdout);
-    match page.status.code() {
-        Some(0) => println!("{said}"),
-        // No Chromium on this machine: said loudly; CI installs it, so there it fails.
-        Some(2) if std::env::var_os("CI").is_none() => println!("{said}"),
-        _ => {
-            panic!("the class page's browser check failed:\n{said}{}", String::from_utf8_lossy(&page.stderr))
-        }
-    }
+    let page = out.join("class.html");
+    browser_check(
+        "tests/class_check.py",
+        &[page.to_str().unwrap(), "--first", &mistake.caught_by, "--students", "2"],
+    );
     assert!(
         std::fs::read_to_string(out.join("class.html")).unwrap().contains(&mistake.cause),
         "the class page names the cause the check gave bob: {}",

@@ -30,7 +30,7 @@ use std::io::{BufReader, BufWriter, Read, Write};
 use std::net::{TcpListener, TcpStream};
 use std::panic::{AssertUnwindSafe, Location, catch_unwind, resume_unwind};
 use std::sync::atomic::{AtomicBool, Ordering};
-use std::sync::{Arc, Mutex};
+use std::sync::{Arc, LazyLock, Mutex};
 
 use serde::de::DeserializeOwned;
 use serde::{Deserialize, Serialize};
@@ -186,7 +186,9 @@ pub fn enter<T>(role: Arc<Role>, check: impl FnOnce() -> T) -> Result<T, Ended> 
 
 /// The role of the check running on this thread.
 fn role() -> Arc<Role> {
-    ROLE.with_borrow(|role| role.clone()).unwrap_or_else(|| Arc::new(Role::Direct))
+    /// Local grading's role, made once: `role` is asked at every value of the student's code.
+    static DIRECT: LazyLock<Arc<Role>> = LazyLock::new(|| Arc::new(Role::Direct));
+    ROLE.with_borrow(|role| role.clone()).unwrap_or_else(|| DIRECT.clone())
 }
 
 /// Ends the check at once, up to [`enter`]: an unwind that the panic hook does not see (it is
