@@ -4,8 +4,10 @@ book/browsercheck.py) and checks what an instructor reads first:
   - the page lays out: the table of what the class gets wrong, its first row the check named by
     --first (the one most students fail), with a cause and the students' names;
   - the heat map has a row per exercise graded, each row's counts summing to the students graded;
+  - every picture of the clusters of wrong pictures loads (expected, a student's, the difference),
+    with --pictures, at least one;
   - nothing is requested but file:// (or data:): the page works offline.
-Usage: python3 tests/class_check.py CLASS.html --first CHECK --students N [--chromium PATH]
+Usage: python3 tests/class_check.py CLASS.html --first CHECK --students N [--pictures] [--chromium PATH]
 Exit status 0 when it passes, 1 naming each failure, 2 when Chromium is missing.
 """
 import argparse
@@ -30,6 +32,7 @@ PROBE = r"""
     firstText: first ? first.textContent : '',
     firstShown: !!box && box.width > 0 && box.height > 0 && box.top < window.innerHeight,
     sums: rows,
+    pictures: [...document.querySelectorAll('tr.clusters img')].map(i => [i.getAttribute('src'), i.complete && i.naturalWidth > 0]),
   });
 })()
 """
@@ -40,6 +43,7 @@ def main():
     parser.add_argument("page")
     parser.add_argument("--first", required=True)
     parser.add_argument("--students", type=int, required=True)
+    parser.add_argument("--pictures", action="store_true")
     parser.add_argument("--chromium")
     args = parser.parse_args()
     chromium = args.chromium or shutil.which("chromium") or shutil.which("chromium-browser")
@@ -67,8 +71,12 @@ def main():
                 failures.append("no exercise in the heat map")
             failures += [f"a heat-map row counts {s} students, not {args.students}" for s in r["sums"]
                          if s != args.students]
+            failures += [f"the picture {src} does not load" for src, loaded in r["pictures"] if not loaded]
+            if args.pictures and not r["pictures"]:
+                failures.append("no cluster of wrong pictures")
             failures += [f"the page requested {url}" for url in browser.requests_elsewhere()]
-            print(f"class page: first {r['first']} ({r['firstText'][:80]!r}), {len(r['sums'])} exercises")
+            print(f"class page: first {r['first']} ({r['firstText'][:80]!r}), {len(r['sums'])} exercises, "
+                  f"{len(r['pictures'])} pictures")
             for f in failures:
                 print(f"FAILED: {f}")
             return 1 if failures else 0

@@ -13,7 +13,7 @@ use std::path::{Path, PathBuf};
 use raylab_protocol::{VIEW_DATA, VIEW_MISSING};
 
 use crate::grade::Grade;
-use crate::verdict::{Status, Verdict};
+use crate::verdict::{Info, Status, Verdict};
 use crate::workspace::Workspace;
 
 /// Writes the report into `out` and returns its path.
@@ -111,21 +111,48 @@ fn row(body: &mut String, ws: &Workspace, v: &Verdict, out: &Path) {
         v.points,
         v.info.points
     );
-    if matches!(v.info.exercise.as_str(), "image" | "final") {
-        images_row(body, ws, v, out);
+    images_row(body, ws, v, out);
+}
+
+/// Where a picture's check writes its images (expected.png, yours.png, diff.png).
+pub struct PictureDir<'a> {
+    /// The folder's name in the check's lecture's folder of `target/grader`.
+    pub name: String,
+    /// The lecture whose scene it draws, and the scene's name.
+    pub scene_lecture: &'a str,
+    pub scene: &'a str,
+}
+
+impl<'a> PictureDir<'a> {
+    /// The folder of a picture's check (`NN/image/S`, `10/final/MM-S`); None for other checks.
+    pub fn of(info: &'a Info) -> Option<Self> {
+        if !matches!(info.exercise.as_str(), "image" | "final") {
+            return None;
+        }
+        let name = info.id.rsplit('/').next().unwrap_or_default();
+        // `NN/image/S` writes into NN/S and draws lecture NN's S; `10/final/MM-S` writes into
+        // 10/final-MM-S and draws lecture MM's S.
+        Some(match name.split_once('-') {
+            Some((lecture, scene)) if info.exercise == "final" => {
+                Self { name: format!("final-{name}"), scene_lecture: lecture, scene }
+            }
+            _ => Self { name: name.to_owned(), scene_lecture: &info.lecture, scene: name },
+        })
+    }
+
+    /// The folder itself, under the grader's output folder `out`.
+    pub fn under(&self, out: &Path, info: &Info) -> PathBuf {
+        out.join(&info.lecture).join(&self.name)
     }
 }
 
 /// The three images of a scene, when the check wrote them.
 fn images_row(body: &mut String, ws: &Workspace, v: &Verdict, out: &Path) {
-    let name = v.info.id.rsplit('/').next().unwrap_or_default();
-    // `NN/image/S` writes into NN/S and draws lecture NN's S; `10/final/MM-S` writes into
-    // 10/final-MM-S and draws lecture MM's S.
-    let (dir_name, scene_lecture, scene_name) = match name.split_once('-') {
-        Some((lecture, scene)) if v.info.exercise == "final" => (format!("final-{name}"), lecture, scene),
-        _ => (name.to_owned(), v.info.lecture.as_str(), name),
+    let Some(picture) = PictureDir::of(&v.info) else {
+        return;
     };
-    let scene_dir = out.join(&v.info.lecture).join(&dir_name);
+    let scene_dir = picture.under(out, &v.info);
+    let PictureDir { name: dir_name, scene_lecture, scene: scene_name } = picture;
     if !scene_dir.join("expected.png").is_file() {
         return;
     }

@@ -145,7 +145,8 @@ fn stub_lecture(root: &Path, lecture: &crate::workspace::Lecture, target: &Path)
 
 /// The judge of submissions: the instructor's workspace with every exercise
 /// stubbed (`todo!()`), the snapshots and the hidden checks in, built in
-/// `ROOT/target/grader/judge`, outside every work folder (on Gradescope,
+/// `ROOT/target/grader/judge` (`judge-f64`, `judge-release`, … for the other builds, which
+/// then neither rebuild nor replace it under a run of another), outside every work folder (on Gradescope,
 /// inside the autograder's source, which the student's user cannot read). It
 /// runs no student code and no reference solution: a check that called either
 /// without `judge::student` would stop on a stub (the reference graded as a
@@ -153,7 +154,13 @@ fn stub_lecture(root: &Path, lecture: &crate::workspace::Lecture, target: &Path)
 /// to date.
 pub fn judge(root: &Path, options: &crate::grade::GradeOptions) -> Result<PathBuf, String> {
     let root = root.canonicalize().map_err(|e| format!("{}: {e}", root.display()))?;
-    let tree = root.join("target").join("grader").join("judge");
+    let build = match (options.f64, options.release) {
+        (false, false) => "",
+        (true, false) => "-f64",
+        (false, true) => "-release",
+        (true, true) => "-f64-release",
+    };
+    let tree = root.join("target").join("grader").join(format!("judge{build}"));
     // Two graders at once (a class graded in parallel) would rewrite the tree under each
     // other's cargo: the second waits here until the first has built, then finds it up to date.
     let lock_path = tree.with_extension("lock");

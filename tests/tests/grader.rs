@@ -556,99 +556,6 @@ fn render_at_week(week: usize, lectures: &[String]) -> Vec<String> {
     problems
 }
 
-/// Runs a page's browser check (`python3 SCRIPT ARGS`, headless Chromium): passes or panics with
-/// what it said. Without Chromium (its exit status 2) it says so loudly and passes, but not in CI,
-/// which installs Chromium.
-pub fn browser_check(script: &str, args: &[&str]) {
-    let out = Command::new("python3").arg(root().join(script)).args(args).output().unwrap();
-    let said = String::from_utf8_lossy(&out.stdout);
-    match out.status.code() {
-        Some(0) => println!("{said}"),
-        Some(2) if std::env::var_os("CI").is_none() => println!("{said}"),
-        _ => panic!("{script} failed:\n{said}{}", String::from_utf8_lossy(&out.stderr)),
-    }
-}
-
-/// A class graded at once (`grader class`): each student's total in the gradebook is their
-/// single grade (`grade --submission`), a catalogued mistake costs its student the check that
-/// catches it and no one else anything, a folder without `lectures/` is a row that says why, and
-/// a second run grades again only the submission that changed.
-#[test]
-#[ignore = "the whole workbench (minutes): cargo test -p workbench-tests -- --ignored; CI runs it"]
-fn a_class_is_graded_into_a_gradebook_of_the_single_grades() {
-    let _turn = WORK.lock().unwrap_or_else(|e| e.into_inner());
-    let mistake =
-        catalogues().into_iter().flat_map(|c| c.mistake).find(|m| m.caught_by.starts_with("02/")).unwrap();
-    let class = scratch().join("class");
-    let _ = std::fs::remove_dir_all(&class);
-    let (submissions, out) = (class.join("submissions"), class.join("out"));
-    copy_tree(&submission("class-ada", &[]), &submissions.join("ada"));
-    let bob = submission("class-bob", &[(&mistake.file, &mistake.find, &mistake.replace)]);
-    copy_tree(&bob, &submissions.join("bob"));
-    std::fs::create_dir_all(submissions.join("carol")).unwrap();
-    std::fs::write(submissions.join("carol/notes.txt"), "I could not finish").unwrap();
-    let run = || {
-        let work = scratch().join("work");
-        let mut command = Command::new(grader_binary());
-        incremental(&mut command);
-        let args = ["class", submissions.to_str().unwrap(), "-o", out.to_str().unwrap(), "--workdir"];
-        let output = command.current_dir(root()).args(args).arg(&work).arg("02").output().unwrap();
-        let stderr = String::from_utf8_lossy(&output.stderr).into_owned();
-        let gradebook = std::fs::read_to_string(out.join("gradebook.csv"))
-            .unwrap_or_else(|e| panic!("no gradebook ({e}):\n{stderr}"));
-        (gradebook, stderr)
-    };
-    let (gradebook, stderr) = run();
-    let rows: Vec<Vec<&str>> = gradebook.lines().map(|l| l.split(',').collect()).collect();
-    let column =
-        |name: &str| rows[0].iter().position(|c| *c == name).unwrap_or_else(|| panic!("no column {name}"));
-    let row =
-        |student: &str| rows.iter().find(|r| r[0] == student).unwrap_or_else(|| panic!("no row {student}"));
-    let (total, possible, caught) = (column("total"), column("possible"), column(&mistake.caught_by));
-    // The totals are the single grades, graded as `grade --submission` grades them.
-    for (student, dir) in [("ada", submissions.join("ada")), ("bob", bob.clone())] {
-        let (grade, _) = grade_submission(&dir, &["02"], &format!("class-{student}.json"));
-        assert_eq!(row(student)[total], grade["score"].to_string(), "{student}'s total\n{stderr}");
-        assert_eq!(row(student)[possible], grade["max_score"].to_string(), "{student}'s possible");
-    }
-    assert_eq!(row("ada")[total], row("ada")[possible], "the reference scores full marks\n{stderr}");
-    assert_eq!(row("bob")[caught], "0", "{} costs bob {}", mistake.name, mistake.caught_by);
-    assert_ne!(row("ada")[caught], "0");
-    let differing: Vec<&str> =
-        (3..rows[0].len() - 1).filter(|&c| row("ada")[c] != row("bob")[c]).map(|c| rows[0][c]).collect();
-    let exercise = mistake.caught_by.rsplit_once('/').unwrap().0;
-    assert!(
-        differing.iter().all(|c| c.starts_with(exercise)),
-        "bob's mistake cost him only {exercise}'s points, not {differing:?}"
-    );
-    assert!(gradebook.lines().any(|l| l.starts_with("carol,0,0,") && l.contains("has no lectures/ folder")));
-    assert!(out.join("students/bob/results.json").is_file(), "Gradescope's results per student");
-    // The class's page, in a browser: bob's mistake is what the class gets wrong first.
-    let page = out.join("class.html");
-    browser_check(
-        "tests/class_check.py",
-        &[page.to_str().unwrap(), "--first", &mistake.caught_by, "--students", "2"],
-    );
-    assert!(
-        std::fs::read_to_string(out.join("class.html")).unwrap().contains(&mistake.cause),
-        "the class page names the cause the check gave bob: {}",
-        mistake.cause
-    );
-    // Again, with bob's submission changed: only bob is graded again.
-    let sphere = submissions.join("bob").join(&mistake.file);
-    let text = std::fs::read_to_string(&sphere).unwrap();
-    std::fs::write(&sphere, text + "// resubmitted\n").unwrap();
-    let (again, stderr) = run();
-    assert_eq!(again, gradebook, "the same grades");
-    let said =
-        |student: &str| stderr.lines().find(|l| l.contains(&format!("] {student}: "))).unwrap_or_default();
-    assert!(said("ada").contains("unchanged since its last grade"), "{stderr}");
-    assert!(
-        said("bob").ends_with(" s") && !said("bob").contains("unchanged"),
-        "bob is graded again: {stderr}"
-    );
-}
-
 /// Lecture 01's camera wrong and lecture 02 right: `grader 02` (which grades 02 alone) says
 /// 02's pictures are blocked by the camera exercise, not that 02's functions are wrong.
 #[test]
@@ -674,38 +581,6 @@ fn an_earlier_lectures_bug_blocks_the_later_pictures_by_name() {
         }
     }
     assert!(images >= 6, "{images} image checks of 02 blocked");
-}
-
-/// One entry of `tests/mistakes/*.toml`.
-#[derive(serde::Deserialize)]
-struct Mistake {
-    name: String,
-    file: String,
-    find: String,
-    replace: String,
-    caught_by: String,
-    cause: String,
-    /// For a picture's check: the exercise its cause names as the first on the picture's path
-    /// whose value differs (`Check NN/function`).
-    #[serde(default)]
-    named: Option<String>,
-}
-
-#[derive(serde::Deserialize)]
-struct Catalogue {
-    mistake: Vec<Mistake>,
-    /// Right answers written another way (as the book writes them): they must pass.
-    #[serde(default)]
-    accepted: Vec<Accepted>,
-}
-
-/// One `[[accepted]]` entry of `tests/mistakes/*.toml`.
-#[derive(serde::Deserialize)]
-struct Accepted {
-    name: String,
-    file: String,
-    find: String,
-    replace: String,
 }
 
 fn accepted() -> Vec<Accepted> {
@@ -751,25 +626,6 @@ fn every_accepted_answer_passes_the_lectures_checks_and_its_tests() {
         }
     }
     assert!(refused.is_empty(), "right answers refused:\n{}", refused.join("\n"));
-}
-
-/// Every `tests/mistakes/*.toml`, in the order of their names.
-fn catalogues() -> Vec<Catalogue> {
-    let dir = root().join("tests/mistakes");
-    let mut files: Vec<PathBuf> = std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().path()).collect();
-    files.sort();
-    files.retain(|f| f.extension().is_some_and(|e| e == "toml"));
-    files
-        .iter()
-        .map(|f| {
-            let text = std::fs::read_to_string(f).unwrap();
-            toml::from_str::<Catalogue>(&text).unwrap_or_else(|e| panic!("{}: {e}", f.display()))
-        })
-        .collect()
-}
-
-fn catalogue() -> Vec<Mistake> {
-    catalogues().into_iter().flat_map(|c| c.mistake).collect()
 }
 
 #[test]

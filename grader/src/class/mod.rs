@@ -2,7 +2,9 @@
 //! `grader class SUBMISSIONS -o DIR`: a whole class graded at once.
 //!
 //! SUBMISSIONS is a folder of submissions, one folder per student (the folder's name is the
-//! student's), each holding `lectures/NN-name/src` itself or one folder down (an unpacked zip).
+//! student's), each holding `lectures/NN-name/src` itself or one folder down (an unpacked zip),
+//! or a zip of such folders; Gradescope's "Export Submissions" is one (`export.rs`: its metadata
+//! names each submission's students).
 //! Each is graded exactly as `grader grade --submission` grades it: its lectures' sources copied
 //! into a pristine work folder, built (as the grading users, where given), and every check judged
 //! by the judge built once from this tree. A work folder is reused from one submission to the
@@ -16,8 +18,12 @@
 //! student whose files are unchanged since their last grade, by the same judge, is not graded
 //! again. One submission that does not compile, loops or crashes costs only itself (its
 //! verdicts say so); one that cannot be graded at all (no `lectures/`) is a row with the reason.
+//!
+//! Past one machine: `--report-only` writes the gradebook and the page from the grades in
+//! DIR/students (several machines' DIRs copied together), and `--results EXPORT` from a
+//! Gradescope export's results alone, graded in Gradescope's containers, without regrading.
 
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, BTreeSet};
 use std::hash::Hasher;
 use std::path::{Path, PathBuf};
 use std::sync::Mutex;
@@ -25,6 +31,9 @@ use std::time::Instant;
 
 use serde::{Deserialize, Serialize};
 
+mod clusters;
+mod export;
+mod regrade;
 mod report;
 
 use crate::grade::{GradeOptions, Selection};
@@ -34,8 +43,9 @@ use crate::platform::RunAs;
 #[derive(clap::Args, Debug)]
 pub struct ClassArgs {
     /// A folder of submissions, one folder per student (named as the student), each holding
-    /// `lectures/NN-name/src` or a folder that does.
-    submissions: PathBuf,
+    /// `lectures/NN-name/src` or a folder that does; or a zip of them (Gradescope's export).
+    #[arg(required_unless_present_any = ["report_only", "results"])]
+    submissions: Option<PathBuf>,
     /// Where the results go.
     #[arg(long, short)]
     output: PathBuf,
@@ -54,10 +64,26 @@ pub struct ClassArgs {
     /// Checks run at once, in all [default: the number of cores].
     #[arg(long)]
     jobs: Option<usize>,
+    /// Grade nothing: write the gradebook and the class's page again from the grades in
+    /// DIR/students (graded earlier, or on other machines and copied together).
+    #[arg(long, conflicts_with_all = ["submissions", "select", "results"])]
+    report_only: bool,
+    /// Grade nothing: the gradebook and the class's page from a Gradescope export's results (a
+    /// zip or its folder, graded there by this course's autograder), without pictures.
+    #[arg(long, value_name = "EXPORT", conflicts_with_all = ["submissions", "select"])]
+    results: Option<PathBuf>,
 }
 
 /// `grader class`: `base` is the grading options of this build (precision, profile, cores).
 pub fn command(args: &ClassArgs, base: &GradeOptions) -> Result<bool, String> {
+    if let Some(export) = &args.results {
+        let grades = results_grades(export, &args.output)?;
+        return write_class(&args.output, &grades).map(|()| true);
+    }
+    let Some(submissions) = args.submissions.clone().filter(|_| !args.report_only) else {
+        let grades = kept_grades(&args.output)?;
+        return write_class(&args.output, &grades).map(|()| true);
+    };
     // The students' code may run as this user: keep it out of this process's pipes.
     crate::platform::keep_others_out();
     let run_as = args.run_as.iter().map(|u| crate::platform::user(u)).collect::<Result<Vec<_>, _>>()?;
@@ -68,7 +94,7 @@ pub fn command(args: &ClassArgs, base: &GradeOptions) -> Result<bool, String> {
     }
     let cores = base.jobs;
     let options = ClassOptions {
-        submissions: args.submissions.clone(),
+        submissions,
         out: args.output.clone(),
         selection: Selection::parse(&args.select)?,
         run_as,
@@ -96,14 +122,22 @@ pub struct ClassOptions {
 
 /// The version of `grade.json`'s format, part of every fingerprint: a grade kept in an older
 /// format is graded again.
-const GRADE_FORMAT: u32 = 1;
+const GRADE_FORMAT: u32 = 2;
 
 /// One student's grade, as `students/NAME/grade.json` keeps it.
 #[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct StudentGrade {
+    /// The submission's folder.
     pub student: String,
-    /// The submission's files and the judge, hashed: unchanged, the grade stands.
+    /// Its students, where an export names them (a group submission has several).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub submitters: Vec<export::Submitter>,
+    /// The submission's files (and the selection), hashed: unchanged, the grade stands as far as
+    /// `judge` does.
     pub fingerprint: String,
+    /// What each lecture's checks depended on when graded (`regrade.rs`).
+    #[serde(default)]
+    pub judge: regrade::JudgePrint,
     pub score: u32,
     pub max_score: u32,
     pub seconds: f64,
@@ -124,19 +158,31 @@ pub struct CheckGrade {
     /// Why it did not pass: the check's likely cause, or what happened (a crash, a time-out).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub cause: Option<String>,
+    /// A failed picture's folder, relative to the class's output: `yours.png` and `diff.png`
+    /// (its difference from `pictures/CHECK/expected.png`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub picture: Option<String>,
 }
 
 /// Grades every submission in `options.submissions` (`base` is the grading options of this
 /// build: precision, profile) and writes DIR.
 pub fn class(root: &Path, options: &ClassOptions, base: &GradeOptions) -> Result<bool, String> {
-    let students = discover(&options.submissions)?;
+    let folder = export::submissions_folder(&options.submissions, &options.out.join("submissions"))?;
+    let submitters = export::metadata(&folder)?;
+    let students = discover(&folder)?;
     if students.is_empty() {
         return Err(format!("{} holds no submission folders", options.submissions.display()));
     }
     std::fs::create_dir_all(options.out.join("students"))
         .map_err(|e| format!("{}: {e}", options.out.display()))?;
     let judge = crate::submission::judge(root, base)?;
-    let judge_print = fingerprint_files(std::slice::from_ref(&judge))?;
+    let ws = crate::workspace::Workspace::open(root)?;
+    let build = format!(
+        "{} {}",
+        if base.f64 { "f64" } else { "f32" },
+        if base.release { "release" } else { "debug" }
+    );
+    let print = regrade::judge_print(&ws, &build)?;
     // Each submission graded at once has grading users of its own (a user's process limit is
     // one job's).
     let mut parallel = options.parallel.clamp(1, students.len());
@@ -150,7 +196,16 @@ pub fn class(root: &Path, options: &ClassOptions, base: &GradeOptions) -> Result
         students.len(),
         workdir.display()
     );
-    let class = Class { root, judge: &judge, judge_print: &judge_print, options, base, jobs: per_job };
+    let class = Class {
+        root,
+        ws: &ws,
+        judge: &judge,
+        print: &print,
+        options,
+        base,
+        jobs: per_job,
+        submitters: &submitters,
+    };
     let queue = Mutex::new(students.iter());
     let grades: Mutex<Vec<StudentGrade>> = Mutex::new(Vec::new());
     // On a terminal, a bar of the submissions graded and the time left; each submission's line
@@ -170,16 +225,21 @@ pub fn class(root: &Path, options: &ClassOptions, base: &GradeOptions) -> Result
             let total = students.len();
             scope.spawn(move || {
                 while let Some((name, path)) = queue.lock().ok().and_then(|mut q| q.next()) {
-                    let (grade, kept) = class.grade(name, path, &work, &users);
+                    let (grade, graded) = class.grade(name, path, &work, &users);
                     let count = done.lock().map(|mut d| {
                         *d += 1;
                         *d
                     });
                     let (score, max) = (grade.score, grade.max_score);
-                    let said = match (&grade.error, kept) {
+                    let said = match (&grade.error, graded) {
                         (Some(error), _) => format!("not graded: {error}"),
-                        (None, true) => format!("{score}/{max} points, unchanged since its last grade"),
-                        (None, false) => format!("{score}/{max} points in {:.1} s", grade.seconds),
+                        (None, Graded::Kept) => format!("{score}/{max} points, unchanged since its last grade"),
+                        (None, Graded::Partly(lectures)) => format!(
+                            "{score}/{max} points, lectures {} graded again (their checks changed) in {:.1} s",
+                            lectures.into_iter().collect::<Vec<_>>().join(", "),
+                            grade.seconds
+                        ),
+                        (None, Graded::Whole) => format!("{score}/{max} points in {:.1} s", grade.seconds),
                     };
                     bar.suspend(|| eprintln!("[{}/{total}] {name}: {said}", count.unwrap_or(0)));
                     bar.inc(1);
@@ -193,20 +253,69 @@ pub fn class(root: &Path, options: &ClassOptions, base: &GradeOptions) -> Result
     bar.finish_and_clear();
     let mut grades = grades.into_inner().map_err(|_| "a grading thread panicked")?;
     grades.sort_by(|a, b| a.student.cmp(&b.student));
-    let csv = options.out.join("gradebook.csv");
-    write_gradebook(&csv, &grades)?;
-    let page = options.out.join("class.html");
-    std::fs::write(&page, report::html(&grades)).map_err(|e| format!("{}: {e}", page.display()))?;
-    eprintln!(
-        "{} submissions in {:.1} s; gradebook: {}; the class: {}",
-        grades.len(),
-        started.elapsed().as_secs_f64(),
-        csv.display(),
-        page.display()
-    );
+    eprintln!("{} submissions in {:.1} s", grades.len(), started.elapsed().as_secs_f64());
+    write_class(&options.out, &grades)?;
     // A submission that could not be graded is its student's row, with the reason: not a failure
     // of the run.
     Ok(true)
+}
+
+/// Writes `out`'s gradebook and class page for `grades`.
+fn write_class(out: &Path, grades: &[StudentGrade]) -> Result<(), String> {
+    let csv = out.join("gradebook.csv");
+    write_gradebook(&csv, grades)?;
+    let page = out.join("class.html");
+    std::fs::write(&page, report::html(grades, out)).map_err(|e| format!("{}: {e}", page.display()))?;
+    eprintln!("gradebook: {}; the class: {}", csv.display(), page.display());
+    Ok(())
+}
+
+/// The grades in a Gradescope export's results (`export`, a zip or its folder), each kept as
+/// `out/students/NAME/grade.json` as if graded here.
+fn results_grades(export: &Path, out: &Path) -> Result<Vec<StudentGrade>, String> {
+    let folder = export::submissions_folder(export, &out.join("export"))?;
+    let metadata = export::metadata(&folder)?;
+    if metadata.is_empty() {
+        return Err(format!("{}: no {} (not a Gradescope export)", export.display(), export::METADATA));
+    }
+    let mut grades = Vec::new();
+    for (name, submission) in metadata {
+        let mut grade = match &submission.results {
+            Some(results) => export::grade_from_results(&name, results),
+            None => StudentGrade {
+                student: name.clone(),
+                submitters: Vec::new(),
+                fingerprint: String::new(),
+                judge: Default::default(),
+                score: 0,
+                max_score: 0,
+                seconds: 0.0,
+                error: Some("no autograder results in the export".to_owned()),
+                checks: Vec::new(),
+            },
+        };
+        grade.submitters = submission.submitters;
+        let dir = out.join("students").join(&name);
+        std::fs::create_dir_all(&dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+        let json = serde_json::to_string_pretty(&grade).map_err(|e| e.to_string())?;
+        std::fs::write(dir.join("grade.json"), json).map_err(|e| format!("{}: {e}", dir.display()))?;
+        grades.push(grade);
+    }
+    Ok(grades)
+}
+
+/// The grades kept in `out/students`, by student.
+fn kept_grades(out: &Path) -> Result<Vec<StudentGrade>, String> {
+    let students = out.join("students");
+    let mut grades = Vec::new();
+    for entry in std::fs::read_dir(&students).map_err(|e| format!("{}: {e}", students.display()))? {
+        let folder = entry.map_err(|e| format!("{}: {e}", students.display()))?.path();
+        let file = folder.join("grade.json");
+        let text = std::fs::read_to_string(&file).map_err(|e| format!("{}: {e}", file.display()))?;
+        grades.push(serde_json::from_str(&text).map_err(|e| format!("{}: {e}", file.display()))?);
+    }
+    grades.sort_by(|a: &StudentGrade, b| a.student.cmp(&b.student));
+    Ok(grades)
 }
 
 /// The submissions: every folder of `dir`, by name, but hidden ones and the `__MACOSX` folder an
@@ -227,38 +336,52 @@ fn discover(dir: &Path) -> Result<Vec<(String, PathBuf)>, String> {
 /// What every student's grade shares: the instructor's tree, the judge, the options.
 struct Class<'a> {
     root: &'a Path,
+    ws: &'a crate::workspace::Workspace,
     judge: &'a Path,
-    /// The judge's binary, hashed: part of every grade's fingerprint.
-    judge_print: &'a str,
+    /// What each lecture's checks depend on, hashed: a grade is kept while its part is unchanged.
+    print: &'a regrade::JudgePrint,
     options: &'a ClassOptions,
     base: &'a GradeOptions,
     /// Checks run at once for one submission.
     jobs: usize,
+    /// Who submitted each folder, where an export says.
+    submitters: &'a BTreeMap<String, export::Submission>,
 }
 
 impl Class<'_> {
     /// One student graded in the work folder `work` as `users`, or their earlier grade if nothing
     /// changed (`true`): never an error, which would cost the others; a submission that cannot be
     /// graded is a grade with the reason.
-    fn grade(&self, name: &str, path: &Path, work: &Path, users: &[RunAs]) -> (StudentGrade, bool) {
-        let Class { root, judge, judge_print, options, base, jobs } = *self;
+    fn grade(&self, name: &str, path: &Path, work: &Path, users: &[RunAs]) -> (StudentGrade, Graded) {
+        let Class { root, ws: _, judge, print, options, base, jobs, submitters } = *self;
+        let submitters = submitters.get(name).map(|s| s.submitters.clone()).unwrap_or_default();
         let start = Instant::now();
         let folder = options.out.join("students").join(name);
         let fingerprint = crate::submission::lecture_files(path)
             .and_then(|files| fingerprint_files(&files))
-            .map(|files| format!("{GRADE_FORMAT}-{files}-{judge_print}-{}", options.selection.0.join(",")))
+            .map(|files| format!("{GRADE_FORMAT}-{files}-{}", options.selection.0.join(",")))
             .unwrap_or_default();
-        if let Some(earlier) = earlier_grade(&folder)
-            && !fingerprint.is_empty()
-            && earlier.fingerprint == fingerprint
-            && earlier.error.is_none()
+        // The same files graded before: what the tree's changes since may have moved, if anything.
+        let earlier = earlier_grade(&folder)
+            .filter(|e| !fingerprint.is_empty() && e.fingerprint == fingerprint && e.error.is_none());
+        let stale = earlier.as_ref().and_then(|e| self.stale(e));
+        let earlier = earlier.filter(|_| stale.is_some());
+        if let (Some(earlier), Some(stale)) = (&earlier, &stale)
+            && stale.is_empty()
         {
-            return (earlier, true);
+            let kept = StudentGrade { submitters, judge: print.clone(), ..earlier.clone() };
+            save_grade(&folder, &kept);
+            return (kept, Graded::Kept);
         }
+        let regraded = stale.unwrap_or_default();
         let graded = (|| {
             let (ws, target) = crate::submission::prepare(root, path, Some(work), users.first())?;
             let mut grading = base.clone();
-            grading.selection = options.selection.clone();
+            grading.selection = if regraded.is_empty() {
+                options.selection.clone()
+            } else {
+                Selection(regraded.iter().cloned().collect())
+            };
             grading.only_prerequisites = true;
             grading.hidden = true;
             grading.target_dir = Some(target);
@@ -269,17 +392,25 @@ impl Class<'_> {
             grading.jobs = jobs;
             let grade = crate::grade::grade(&ws, &grading)?;
             std::fs::create_dir_all(&folder).map_err(|e| format!("{}: {e}", folder.display()))?;
-            let results = serde_json::to_string_pretty(&crate::output::gradescope(&grade))
-                .map_err(|e| e.to_string())?;
+            // The pictures of the last grade are not this one's (those of the lectures graded
+            // again, when only some are).
+            forget_pictures(&folder.join(PICTURES), &regraded);
             let file = folder.join("results.json");
+            let mut results = crate::output::gradescope(&grade);
+            if !regraded.is_empty() {
+                let kept = std::fs::read_to_string(&file).ok().and_then(|t| serde_json::from_str(&t).ok());
+                results = regrade::merge_results(&kept.unwrap_or_default(), &results, &regraded);
+            }
+            let results = serde_json::to_string_pretty(&results).map_err(|e| e.to_string())?;
             std::fs::write(&file, results).map_err(|e| format!("{}: {e}", file.display()))?;
-            Ok::<_, String>(grade)
+            let written = grading.out_dir.as_deref().unwrap_or(work);
+            let pictures = keep_pictures(&grade, written, &options.out, name);
+            Ok::<_, String>((grade, pictures))
         })();
         let seconds = start.elapsed().as_secs_f64();
         let student = match graded {
-            Ok(grade) => {
-                let (score, max_score) = grade.points();
-                let checks = grade
+            Ok((grade, mut pictures)) => {
+                let mut checks: Vec<CheckGrade> = grade
                     .verdicts
                     .iter()
                     .map(|v| CheckGrade {
@@ -293,13 +424,19 @@ impl Class<'_> {
                             (None, crate::verdict::Status::Passed) => None,
                             (None, _) => Some(v.summary.clone()),
                         },
+                        picture: pictures.remove(&v.info.id),
                     })
                     .collect();
+                if let Some(earlier) = earlier.filter(|_| !regraded.is_empty()) {
+                    checks = regrade::merge(earlier.checks, checks, &regraded);
+                }
                 StudentGrade {
                     student: name.to_owned(),
+                    submitters,
                     fingerprint,
-                    score,
-                    max_score,
+                    judge: print.clone(),
+                    score: checks.iter().map(|c| c.points).sum(),
+                    max_score: checks.iter().map(|c| c.max_points).sum(),
                     seconds,
                     error: None,
                     checks,
@@ -307,7 +444,9 @@ impl Class<'_> {
             }
             Err(error) => StudentGrade {
                 student: name.to_owned(),
+                submitters,
                 fingerprint,
+                judge: print.clone(),
                 score: 0,
                 max_score: 0,
                 seconds,
@@ -315,12 +454,92 @@ impl Class<'_> {
                 checks: Vec::new(),
             },
         };
-        let _ = std::fs::create_dir_all(&folder);
-        if let Ok(json) = serde_json::to_string_pretty(&student) {
-            let _ = std::fs::write(folder.join("grade.json"), json);
-        }
-        (student, false)
+        save_grade(&folder, &student);
+        let graded = if regraded.is_empty() || student.error.is_some() {
+            Graded::Whole
+        } else {
+            Graded::Partly(regraded)
+        };
+        (student, graded)
     }
+
+    /// The lectures of `earlier` (a grade of the same files) that the tree's changes since may
+    /// have moved, among those graded: `None` to grade it all again (its common part changed, or
+    /// the class selects exercises or checks, which a lecture's regrade would not match).
+    fn stale(&self, earlier: &StudentGrade) -> Option<BTreeSet<String>> {
+        let stale = regrade::stale_lectures(self.ws, &earlier.judge, self.print)?;
+        let selected = &self.options.selection.0;
+        if selected.iter().any(|s| s.len() != 2) {
+            return if stale.is_empty() { Some(stale) } else { None };
+        }
+        Some(stale.into_iter().filter(|l| selected.is_empty() || selected.contains(l)).collect())
+    }
+}
+
+/// How a student's grade came to be.
+enum Graded {
+    /// Kept: their files and what their checks depend on are unchanged.
+    Kept,
+    /// These lectures graded again (their checks changed), the others kept.
+    Partly(BTreeSet<String>),
+    Whole,
+}
+
+/// Writes a student's `grade.json` (a grade that cannot be written is graded again next time).
+fn save_grade(folder: &Path, grade: &StudentGrade) {
+    let _ = std::fs::create_dir_all(folder);
+    if let Ok(json) = serde_json::to_string_pretty(grade) {
+        let _ = std::fs::write(folder.join("grade.json"), json);
+    }
+}
+
+/// Removes a student's pictures: those of the lectures `only`, or all of them when it is empty.
+fn forget_pictures(pictures: &Path, only: &BTreeSet<String>) {
+    if only.is_empty() {
+        let _ = std::fs::remove_dir_all(pictures);
+        return;
+    }
+    for entry in std::fs::read_dir(pictures).into_iter().flatten().flatten() {
+        // A check's folder starts with its lecture: `02-image-overlapping-depths`.
+        let name = entry.file_name().to_string_lossy().into_owned();
+        if only.iter().any(|l| name.starts_with(&format!("{l}-"))) {
+            let _ = std::fs::remove_dir_all(entry.path());
+        }
+    }
+}
+
+/// The folder of the pictures, the students' (`students/NAME/pictures/CHECK`) and the expected
+/// ones (`pictures/CHECK/expected.png`).
+const PICTURES: &str = "pictures";
+
+/// Copies the failed pictures of `grade` (written by the judge into `written`) into the class's
+/// output `out`: each student's `yours.png` and `diff.png`, each check's `expected.png` once.
+/// Returns each failed picture's folder by check, relative to `out`; a picture that cannot be
+/// copied is left out (the report's clusters only miss it).
+fn keep_pictures(
+    grade: &crate::grade::Grade,
+    written: &Path,
+    out: &Path,
+    student: &str,
+) -> BTreeMap<String, String> {
+    let mut kept = BTreeMap::new();
+    for v in grade.verdicts.iter().filter(|v| v.status == crate::verdict::Status::Failed) {
+        let Some(picture) = crate::report::PictureDir::of(&v.info) else { continue };
+        let from = picture.under(written, &v.info);
+        // `02/image/overlapping-depths` → `02-image-overlapping-depths`.
+        let check = v.info.id.replace('/', "-");
+        let yours = format!("students/{student}/{PICTURES}/{check}");
+        let expected = out.join(PICTURES).join(&check);
+        let copied = std::fs::create_dir_all(out.join(&yours))
+            .and_then(|()| std::fs::create_dir_all(&expected))
+            .and_then(|()| std::fs::copy(from.join("yours.png"), out.join(&yours).join("yours.png")))
+            .and_then(|_| std::fs::copy(from.join("diff.png"), out.join(&yours).join("diff.png")))
+            .and_then(|_| std::fs::copy(from.join("expected.png"), expected.join("expected.png")));
+        if copied.is_ok() {
+            kept.insert(v.info.id.clone(), yours);
+        }
+    }
+    kept
 }
 
 /// The grade kept in `folder`, if any.
@@ -340,10 +559,12 @@ fn fingerprint_files(files: &[PathBuf]) -> Result<String, String> {
     Ok(format!("{:016x}", hasher.finish()))
 }
 
-/// `gradebook.csv`: a header row, then one row per student: name, total, possible, then the
-/// points of every exercise and of every check (the columns of every student's checks, in
-/// course order), and why a submission was not graded. Empty where a student has no such check
-/// (not graded).
+/// `gradebook.csv`: a header row, then one row per student: name, student id, email, their
+/// submission's folder, total, possible, then the points of every exercise and of every check
+/// (the columns of every student's checks, in course order), and why a submission was not
+/// graded. Empty where a student has no such check (not graded). A submission without named
+/// students (a folder of folders) is one row, named as its folder; one with several (a group
+/// on Gradescope) is a row per student, as an LMS's import takes them.
 pub fn write_gradebook(file: &Path, grades: &[StudentGrade]) -> Result<(), String> {
     let mut exercises: Vec<String> = Vec::new();
     let mut checks: Vec<String> = Vec::new();
@@ -358,7 +579,8 @@ pub fn write_gradebook(file: &Path, grades: &[StudentGrade]) -> Result<(), Strin
         }
     }
     let mut writer = csv::Writer::from_path(file).map_err(|e| format!("{}: {e}", file.display()))?;
-    let mut header = vec!["student".to_owned(), "total".to_owned(), "possible".to_owned()];
+    let mut header: Vec<String> =
+        ["student", "sid", "email", "submission", "total", "possible"].map(str::to_owned).into();
     header.extend(exercises.iter().cloned());
     header.extend(checks.iter().cloned());
     header.push("not graded".to_owned());
@@ -369,15 +591,28 @@ pub fn write_gradebook(file: &Path, grades: &[StudentGrade]) -> Result<(), Strin
             sums
         });
         let by_check: BTreeMap<&str, u32> = grade.checks.iter().map(|c| (c.id.as_str(), c.points)).collect();
-        let mut row = vec![grade.student.clone(), grade.score.to_string(), grade.max_score.to_string()];
-        row.extend(
+        let mut points = vec![grade.score.to_string(), grade.max_score.to_string()];
+        points.extend(
             exercises.iter().map(|e| by_exercise.get(e.as_str()).map_or(String::new(), u32::to_string)),
         );
-        row.extend(checks.iter().map(|c| by_check.get(c.as_str()).map_or(String::new(), u32::to_string)));
-        row.push(grade.error.clone().unwrap_or_default());
-        writer.write_record(&row).map_err(|e| e.to_string())?;
+        points.extend(checks.iter().map(|c| by_check.get(c.as_str()).map_or(String::new(), u32::to_string)));
+        points.push(text_cell(grade.error.as_deref().unwrap_or_default()));
+        let folder = export::Submitter { name: grade.student.clone(), ..Default::default() };
+        for who in if grade.submitters.is_empty() { std::slice::from_ref(&folder) } else { &grade.submitters }
+        {
+            let mut row = [&who.name, &who.sid, &who.email, &grade.student].map(|t| text_cell(t)).to_vec();
+            row.extend(points.iter().cloned());
+            writer.write_record(&row).map_err(|e| e.to_string())?;
+        }
     }
     writer.flush().map_err(|e| format!("{}: {e}", file.display()))
+}
+
+/// A cell of text (a name, a folder, a reason) as a spreadsheet shows it: one that starts like a
+/// formula (`=`, `+`, `-`, `@`, a tab or a return) starts with `'`, which shows it as text
+/// (a student names themselves on Gradescope, and an export's folder is named by its zip).
+fn text_cell(text: &str) -> String {
+    if text.starts_with(['=', '+', '-', '@', '\t', '\r']) { format!("'{text}") } else { text.to_owned() }
 }
 
 #[cfg(test)]
@@ -386,7 +621,15 @@ mod tests {
 
     fn check(id: &str, points: u32, max_points: u32) -> CheckGrade {
         let exercise = id.rsplit_once('/').map_or(id, |(e, _)| e).to_owned();
-        CheckGrade { id: id.into(), exercise, points, max_points, status: "passed".into(), cause: None }
+        CheckGrade {
+            id: id.into(),
+            exercise,
+            points,
+            max_points,
+            status: "passed".into(),
+            cause: None,
+            picture: None,
+        }
     }
 
     #[test]
@@ -407,7 +650,9 @@ mod tests {
         std::fs::create_dir_all(&dir).unwrap();
         let student = |name: &str, checks: Vec<CheckGrade>, error: Option<&str>| StudentGrade {
             student: name.into(),
+            submitters: Vec::new(),
             fingerprint: String::new(),
+            judge: Default::default(),
             score: checks.iter().map(|c| c.points).sum(),
             max_score: checks.iter().map(|c| c.max_points).sum(),
             seconds: 1.0,
@@ -422,6 +667,18 @@ mod tests {
                 None,
             ),
             student("bob", Vec::new(), Some("no lectures/ folder")),
+            student("=HYPERLINK(\"http://x\")", Vec::new(), Some("-")),
+            StudentGrade {
+                submitters: vec![
+                    export::Submitter {
+                        name: "Ben Ng".into(),
+                        sid: "2001".into(),
+                        email: "ben@example.edu".into(),
+                    },
+                    export::Submitter { name: "Cy Ortiz".into(), sid: "2002".into(), email: String::new() },
+                ],
+                ..student("submission_102", vec![check("02/hit_plane/unit", 1, 1)], None)
+            },
         ];
         let file = dir.join("gradebook.csv");
         write_gradebook(&file, &grades).unwrap();
@@ -429,12 +686,20 @@ mod tests {
         let lines: Vec<&str> = text.lines().collect();
         assert_eq!(
             lines[0],
-            "student,total,possible,02/hit_plane,02/hit_plane/unit,02/hit_plane/grazing,not graded"
+            "student,sid,email,submission,total,possible,02/hit_plane,02/hit_plane/unit,02/hit_plane/grazing,not graded"
         );
-        assert_eq!(lines[1], "ada,3,3,3,1,2,");
+        assert_eq!(lines[1], "ada,,,ada,3,3,3,1,2,");
         // A name with a comma is quoted, as spreadsheets read it.
-        assert_eq!(lines[2], "\"Lovelace, A.\",2,3,2,0,2,");
-        assert_eq!(lines[3], "bob,0,0,,,,no lectures/ folder");
+        assert_eq!(lines[2], "\"Lovelace, A.\",,,\"Lovelace, A.\",2,3,2,0,2,");
+        assert_eq!(lines[3], "bob,,,bob,0,0,,,,no lectures/ folder");
+        // A name a spreadsheet would take for a formula is text.
+        assert_eq!(
+            lines[4],
+            "\"'=HYPERLINK(\"\"http://x\"\")\",,,\"'=HYPERLINK(\"\"http://x\"\")\",0,0,,,,'-"
+        );
+        // A group's submission: a row per student, each with the group's points.
+        assert_eq!(lines[5], "Ben Ng,2001,ben@example.edu,submission_102,1,1,1,1,,");
+        assert_eq!(lines[6], "Cy Ortiz,2002,,submission_102,1,1,1,1,,");
         std::fs::remove_dir_all(&dir).unwrap();
     }
 }

@@ -2,15 +2,19 @@
 //! `DIR/class.html`: what a class gets wrong, for the next lecture. One page, offline, no script:
 //!
 //! - first, the checks the most students fail, each with its causes (the checks' "likely: …"),
-//!   how many students each, and who;
+//!   how many students each, and who; under a picture's check, its clusters of wrong pictures
+//!   (`clusters.rs`), the largest first, each shown by one picture and its difference from the
+//!   expected, with its size, its students and the cause the check gave most often in it;
 //! - then, per lecture and exercise in course order, how many students passed, failed, did not
 //!   start, were blocked or crashed (a heat map: each cell shaded by its share of the class);
 //! - last, the submissions that could not be graded, and why.
 
 use std::collections::BTreeMap;
 use std::fmt::Write;
+use std::path::Path;
 
-use super::StudentGrade;
+use super::clusters::{Clusters, clusters};
+use super::{PICTURES, StudentGrade};
 use crate::report::escape;
 
 /// The outcomes a heat map's columns count, in order, with their cells' colours.
@@ -33,8 +37,8 @@ fn column(status: &str) -> usize {
     }
 }
 
-/// The page for `grades` (every student's, graded or not).
-pub fn html(grades: &[StudentGrade]) -> String {
+/// The page for `grades` (every student's, graded or not), whose pictures are in `out`.
+pub fn html(grades: &[StudentGrade], out: &Path) -> String {
     let graded: Vec<&StudentGrade> = grades.iter().filter(|g| g.error.is_none()).collect();
     let mut page = String::new();
     let _ = write!(
@@ -44,7 +48,9 @@ pub fn html(grades: &[StudentGrade]) -> String {
         grades.len(),
         graded.len()
     );
-    causes(&mut page, &graded);
+    let mut missing = Vec::new();
+    let clusters = clusters(out, grades, &mut missing);
+    causes(&mut page, &graded, &clusters);
     heat_map(&mut page, &graded);
     let not_graded: Vec<&StudentGrade> = grades.iter().filter(|g| g.error.is_some()).collect();
     if !not_graded.is_empty() {
@@ -59,24 +65,56 @@ pub fn html(grades: &[StudentGrade]) -> String {
         }
         page.push_str("</ul>");
     }
+    if !missing.is_empty() {
+        let _ = write!(
+            page,
+            "<p id=\"missing\">Pictures gone since their grade (left out of the clusters): {}</p>",
+            escape(&missing.join(", "))
+        );
+    }
     page.push_str("</body></html>\n");
     page
 }
 
-/// A failed check's causes: each with the students whose failure names it.
-type Causes<'a> = BTreeMap<&'a str, Vec<&'a str>>;
+/// A failed check's causes, by [`cause_key`]: each with its words as its first student's check
+/// said them, and the students whose failure names it.
+type Causes<'a> = BTreeMap<String, (&'a str, Vec<&'a str>)>;
 
-/// The checks failed by the most students, most first, each with its causes.
-fn causes(page: &mut String, graded: &[&StudentGrade]) {
+/// What makes two causes one: their words, not their numbers. A picture's cause names the pixel
+/// and the values it saw there (`expected normal (0.1, 0.9, 0.0) at pixel (59, 52)`), which
+/// differ from student to student with the same mistake; every number (a run of digits and
+/// points, with its sign) reads as `#`.
+pub fn cause_key(cause: &str) -> String {
+    let mut key = String::with_capacity(cause.len());
+    let mut chars = cause.chars().peekable();
+    while let Some(c) = chars.next() {
+        if c.is_ascii_digit() {
+            if key.ends_with('-') || key.ends_with('−') {
+                key.pop();
+            }
+            while chars.next_if(|c| c.is_ascii_digit() || *c == '.').is_some() {}
+            key.push('#');
+        } else {
+            key.push(c);
+        }
+    }
+    key
+}
+
+/// The checks failed by the most students, most first, each with its causes and, for a
+/// picture's check, its clusters of wrong pictures.
+fn causes(page: &mut String, graded: &[&StudentGrade], clusters: &[Clusters]) {
     let mut failed: BTreeMap<&str, Causes> = BTreeMap::new();
     for g in graded {
         for c in g.checks.iter().filter(|c| c.status == "FAILED") {
             let cause = c.cause.as_deref().unwrap_or("(no cause named)");
-            failed.entry(&c.id).or_default().entry(cause).or_default().push(&g.student);
+            let group =
+                failed.entry(&c.id).or_default().entry(cause_key(cause)).or_insert((cause, Vec::new()));
+            group.1.push(&g.student);
         }
     }
     let mut checks: Vec<(&str, usize, &Causes)> =
-        failed.iter().map(|(id, causes)| (*id, causes.values().map(Vec::len).sum(), causes)).collect();
+        failed.iter().map(|(id, causes)| (*id, causes.values().map(|c| c.1.len()).sum(), causes)).collect();
     checks.sort_by(|a, b| b.1.cmp(&a.1).then(a.0.cmp(b.0)));
     page.push_str("<h2 id=\"causes\">What the class gets wrong</h2>");
     if checks.is_empty() {
@@ -87,24 +125,38 @@ fn causes(page: &mut String, graded: &[&StudentGrade]) {
         "<table class=\"causes\"><tr><th>check</th><th>students</th><th>likely cause</th><th>who</th></tr>",
     );
     for (id, count, causes) in checks {
-        let mut causes: Vec<(&&str, &Vec<&str>)> = causes.iter().collect();
-        causes.sort_by(|a, b| b.1.len().cmp(&a.1.len()).then(a.0.cmp(b.0)));
-        for (i, (cause, students)) in causes.iter().enumerate() {
-            let head = if i == 0 {
-                format!(
-                    "<td rowspan=\"{}\" class=\"id\">{}</td><td rowspan=\"{}\" class=\"n\">{count} of {}</td>",
-                    causes.len(),
-                    escape(id),
-                    causes.len(),
-                    graded.len()
-                )
-            } else {
-                String::new()
-            };
+        let head = |rows: usize| {
+            format!(
+                "<td rowspan=\"{rows}\" class=\"id\">{}</td><td rowspan=\"{rows}\" class=\"n\">{count} of {}</td>",
+                escape(id),
+                graded.len()
+            )
+        };
+        // A picture's check: its clusters of wrong pictures, each with the cause its check gave
+        // most often in it.
+        if let Some(clusters) = clusters.iter().find(|c| c.check == id) {
             let _ = write!(
                 page,
-                "<tr data-check=\"{}\">{head}<td>{} <span class=\"n\">({})</span></td><td>{}</td></tr>",
+                "<tr data-check=\"{}\">{}<td colspan=\"2\">{} wrong picture{}, below</td></tr>",
                 escape(id),
+                head(1),
+                clusters.clusters.len(),
+                if clusters.clusters.len() == 1 { "" } else { "s" }
+            );
+            pictures(page, clusters);
+            continue;
+        }
+        let mut causes: Vec<&(&str, Vec<&str>)> = causes.values().collect();
+        causes.sort_by(|a, b| b.1.len().cmp(&a.1.len()).then(a.0.cmp(b.0)));
+        for (i, (cause, students)) in causes.iter().enumerate() {
+            let head = if i == 0 { head(causes.len()) } else { String::new() };
+            let _ = write!(
+                page,
+                "<tr data-check=\"{}\" data-cause=\"{}\" data-students=\"{}\">{head}\
+                 <td>{} <span class=\"n\">({})</span></td><td>{}</td></tr>",
+                escape(id),
+                escape(cause),
+                escape(&students.join("\n")),
                 escape(cause),
                 students.len(),
                 escape(&students.join(", "))
@@ -112,6 +164,60 @@ fn causes(page: &mut String, graded: &[&StudentGrade]) {
         }
     }
     page.push_str("</table>");
+}
+
+/// A picture's check's row of clusters: the expected picture, then each cluster's first picture
+/// and its difference, its size, students and most given cause.
+fn pictures(page: &mut String, Clusters { check, clusters, apart }: &Clusters) {
+    let expected = format!("{PICTURES}/{}/expected.png", check.replace('/', "-"));
+    // The distances, as a share of pixels a viewer tells apart at a glance.
+    let spread = clusters.iter().map(|c| c.spread).fold(0.0, f64::max);
+    let apart = apart.map_or_else(String::new, |d| format!(", the nearest two {:.2} % apart", 100.0 * d));
+    let _ = write!(
+        page,
+        "<tr class=\"clusters\" data-check=\"{}\"><td colspan=\"4\"><p>{} wrong picture{} of {} \
+         <span class=\"n\">(pictures in a cluster at most {:.2} % of pixels apart{apart})</span>:</p>\
+         <figure><img src=\"{}\" alt=\"expected\"><figcaption>expected</figcaption></figure>",
+        escape(check),
+        clusters.len(),
+        if clusters.len() == 1 { "" } else { "s" },
+        escape(check),
+        100.0 * spread,
+        href(&expected)
+    );
+    for cluster in clusters {
+        let (cause, said) = cluster.cause;
+        let _ = write!(
+            page,
+            "<figure class=\"cluster\" data-students=\"{}\">\
+             <img src=\"{}\" alt=\"{}'s picture\"><img src=\"{}\" alt=\"its difference from the expected (FLIP)\">\
+             <figcaption><b>{} student{}</b>: {}<br>likely: {} <span class=\"n\">({said} of {})</span></figcaption></figure>",
+            escape(&cluster.students.join("\n")),
+            href(&format!("{}/yours.png", cluster.picture)),
+            escape(cluster.students[0]),
+            href(&format!("{}/diff.png", cluster.picture)),
+            cluster.students.len(),
+            if cluster.students.len() == 1 { "" } else { "s" },
+            escape(&cluster.students.join(", ")),
+            escape(cause),
+            cluster.students.len()
+        );
+    }
+    page.push_str("</td></tr>");
+}
+
+/// A relative path as a URL's path: every byte but letters, digits and `/-_.~` percent-encoded
+/// (a student's folder may be named anything), then escaped for an attribute.
+fn href(path: &str) -> String {
+    let mut url = String::new();
+    for byte in path.bytes() {
+        if byte.is_ascii_alphanumeric() || b"/-_.~".contains(&byte) {
+            url.push(byte as char);
+        } else {
+            let _ = write!(url, "%{byte:02X}");
+        }
+    }
+    escape(&url)
 }
 
 /// Per exercise, in course order, how many students' checks of it ended each way: an exercise
@@ -167,7 +273,10 @@ fn heat_map(page: &mut String, graded: &[&StudentGrade]) {
 const STYLE: &str = "body{font:15px/1.4 system-ui,sans-serif;margin:2em;color:#222}\
 table{border-collapse:collapse;margin:1em 0}td,th{border:1px solid #ccc;padding:.25em .6em;vertical-align:top}\
 th{background:#f4f4f4;text-align:left}.id{font-family:ui-monospace,monospace;white-space:nowrap}\
-.n{text-align:right;font-variant-numeric:tabular-nums}";
+.n{text-align:right;font-variant-numeric:tabular-nums}\
+tr.clusters figure{display:inline-block;margin:.3em .8em .3em 0;vertical-align:top;max-width:26em}\
+tr.clusters img{width:12em;image-rendering:pixelated;margin-right:.2em}\
+tr.clusters figure:first-of-type img{border:2px solid #2e7d32}figcaption{font-size:90%}";
 
 #[cfg(test)]
 mod tests {
@@ -178,19 +287,39 @@ mod tests {
         let exercise = id.rsplit_once('/').map_or(id, |(e, _)| e).to_owned();
         let points = u32::from(status == "passed");
         let cause = cause.map(str::to_owned);
-        CheckGrade { id: id.into(), exercise, points, max_points: 1, status: status.into(), cause }
+        CheckGrade {
+            id: id.into(),
+            exercise,
+            points,
+            max_points: 1,
+            status: status.into(),
+            cause,
+            picture: None,
+        }
     }
 
     fn student(name: &str, checks: Vec<CheckGrade>) -> StudentGrade {
         StudentGrade {
             student: name.into(),
+            submitters: Vec::new(),
             fingerprint: String::new(),
+            judge: Default::default(),
             score: checks.iter().map(|c| c.points).sum(),
             max_score: checks.len() as u32,
             seconds: 0.0,
             error: None,
             checks,
         }
+    }
+
+    #[test]
+    fn causes_that_differ_in_their_numbers_only_are_one() {
+        let a =
+            "expected normal (-0.095, 0.995, 0.007) at pixel (59, 52), got (0.276, 0.5, -1) (2124 pixels)";
+        let b = "expected normal (0.1, −0.9, 7) at pixel (3, 152), got (1.5, 0, 0) (7 pixels)";
+        assert_eq!(cause_key(a), cause_key(b));
+        assert_eq!(cause_key(a), "expected normal (#, #, #) at pixel (#, #), got (#, #, #) (# pixels)");
+        assert_ne!(cause_key("keep the nearest hit"), cause_key("keep the farthest hit"));
     }
 
     #[test]
@@ -213,12 +342,13 @@ mod tests {
                 ],
             ),
         ];
-        let page = html(&grades);
+        let page = html(&grades, Path::new("nowhere"));
         let sphere = page.find("data-check=\"02/sphere/unit\"").unwrap();
         let plane = page.find("data-check=\"02/plane/unit\"").unwrap();
         assert!(sphere < plane, "the check three students fail comes before the one one student fails");
         assert!(page.contains("3 of 3"), "{page}");
         assert!(page.contains("the far root <span class=\"n\">(2)</span></td><td>ann, ben</td>"), "{page}");
+        assert!(page.contains("data-cause=\"the far root\" data-students=\"ann\nben\""), "{page}");
         assert!(page.contains("cy &lt;3"), "names are escaped");
         // The heat map: 02/plane passed by one, failed by one, not started by one.
         let row = &page[page.find("data-exercise=\"02/plane\"").unwrap()..];

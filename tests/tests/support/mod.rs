@@ -2,6 +2,9 @@
 //! with the tests' precision, submissions patched from the reference, and the
 //! shared work folder they are graded in.
 
+// Each test binary (grader, class, redteam) includes this module and uses part of it.
+#![allow(dead_code)]
+
 use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::sync::{Mutex, OnceLock};
@@ -142,4 +145,68 @@ pub fn grade_submission(submission: &Path, select: &[&str], json_name: &str) -> 
         vec!["grade", "--submission", submission.to_str().unwrap(), "--workdir", work.to_str().unwrap()];
     args.extend_from_slice(select);
     grader(&args, &scratch().join(json_name))
+}
+
+/// One entry of `tests/mistakes/*.toml`.
+#[derive(serde::Deserialize)]
+pub struct Mistake {
+    pub name: String,
+    pub file: String,
+    pub find: String,
+    pub replace: String,
+    pub caught_by: String,
+    pub cause: String,
+    /// For a picture's check: the exercise its cause names as the first on the picture's path
+    /// whose value differs (`Check NN/function`).
+    #[serde(default)]
+    pub named: Option<String>,
+}
+
+#[derive(serde::Deserialize)]
+pub struct Catalogue {
+    pub mistake: Vec<Mistake>,
+    /// Right answers written another way (as the book writes them): they must pass.
+    #[serde(default)]
+    pub accepted: Vec<Accepted>,
+}
+
+/// One `[[accepted]]` entry of `tests/mistakes/*.toml`.
+#[derive(serde::Deserialize)]
+pub struct Accepted {
+    pub name: String,
+    pub file: String,
+    pub find: String,
+    pub replace: String,
+}
+
+/// Every `tests/mistakes/*.toml`, in the order of their names.
+pub fn catalogues() -> Vec<Catalogue> {
+    let dir = root().join("tests/mistakes");
+    let mut files: Vec<PathBuf> = std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().path()).collect();
+    files.sort();
+    files.retain(|f| f.extension().is_some_and(|e| e == "toml"));
+    files
+        .iter()
+        .map(|f| {
+            let text = std::fs::read_to_string(f).unwrap();
+            toml::from_str::<Catalogue>(&text).unwrap_or_else(|e| panic!("{}: {e}", f.display()))
+        })
+        .collect()
+}
+
+pub fn catalogue() -> Vec<Mistake> {
+    catalogues().into_iter().flat_map(|c| c.mistake).collect()
+}
+
+/// Runs a page's browser check (`python3 SCRIPT ARGS`, headless Chromium): passes or panics with
+/// what it said. Without Chromium (its exit status 2) it says so loudly and passes, but not in CI,
+/// which installs Chromium.
+pub fn browser_check(script: &str, args: &[&str]) {
+    let out = Command::new("python3").arg(root().join(script)).args(args).output().unwrap();
+    let said = String::from_utf8_lossy(&out.stdout);
+    match out.status.code() {
+        Some(0) => println!("{said}"),
+        Some(2) if std::env::var_os("CI").is_none() => println!("{said}"),
+        _ => panic!("{script} failed:\n{said}{}", String::from_utf8_lossy(&out.stderr)),
+    }
 }
