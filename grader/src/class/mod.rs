@@ -349,9 +349,10 @@ struct Class<'a> {
 }
 
 impl Class<'_> {
-    /// One student graded in the work folder `work` as `users`, or their earlier grade if nothing
-    /// changed (`true`): never an error, which would cost the others; a submission that cannot be
-    /// graded is a grade with the reason.
+    /// One student graded in the work folder `work` as `users`; or their earlier grade, kept
+    /// whole if nothing it depends on changed, or in part (the lectures whose checks did not):
+    /// never an error, which would cost the others; a submission that cannot be graded is a grade
+    /// with the reason.
     fn grade(&self, name: &str, path: &Path, work: &Path, users: &[RunAs]) -> (StudentGrade, Graded) {
         let Class { root, ws: _, judge, print, options, base, jobs, submitters } = *self;
         let submitters = submitters.get(name).map(|s| s.submitters.clone()).unwrap_or_default();
@@ -364,7 +365,12 @@ impl Class<'_> {
         // The same files graded before: what the tree's changes since may have moved, if anything.
         let earlier = earlier_grade(&folder)
             .filter(|e| !fingerprint.is_empty() && e.fingerprint == fingerprint && e.error.is_none());
-        let stale = earlier.as_ref().and_then(|e| self.stale(e));
+        // Kept in part only with its Gradescope results to merge into.
+        let file = folder.join("results.json");
+        let kept_results: Option<serde_json::Value> =
+            std::fs::read_to_string(&file).ok().and_then(|t| serde_json::from_str(&t).ok());
+        let stale =
+            earlier.as_ref().and_then(|e| self.stale(e)).filter(|s| s.is_empty() || kept_results.is_some());
         let earlier = earlier.filter(|_| stale.is_some());
         if let (Some(earlier), Some(stale)) = (&earlier, &stale)
             && stale.is_empty()
@@ -395,11 +401,9 @@ impl Class<'_> {
             // The pictures of the last grade are not this one's (those of the lectures graded
             // again, when only some are).
             forget_pictures(&folder.join(PICTURES), &regraded);
-            let file = folder.join("results.json");
             let mut results = crate::output::gradescope(&grade);
-            if !regraded.is_empty() {
-                let kept = std::fs::read_to_string(&file).ok().and_then(|t| serde_json::from_str(&t).ok());
-                results = regrade::merge_results(&kept.unwrap_or_default(), &results, &regraded);
+            if let Some(kept) = kept_results.as_ref().filter(|_| !regraded.is_empty()) {
+                results = regrade::merge_results(kept, &results, &regraded);
             }
             let results = serde_json::to_string_pretty(&results).map_err(|e| e.to_string())?;
             std::fs::write(&file, results).map_err(|e| format!("{}: {e}", file.display()))?;
