@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """Opens `grader class`'s class.html in headless Chromium (stdlib only; the DevTools client of
 book/browsercheck.py) and checks what an instructor reads first:
-  - the page lays out: the table of what the class gets wrong, its first row the check named by
-    --first (the one most students fail), with a cause and the students' names;
+  - the page lays out: the class's mistakes at a glance first, their first row on the first
+    screen; the table of what the class gets wrong, its first row the check named by --first (the
+    one most students fail), with a cause and the students' names;
   - the heat map has a row per exercise graded, each row's counts summing to the students graded;
   - every picture of the clusters of wrong pictures loads (expected, a student's, the difference),
     with --pictures, at least one;
@@ -24,9 +25,10 @@ from browsercheck import TIMEOUT, Chromium  # noqa: E402
 PROBE = r"""
 (() => {
   const first = document.querySelector('table.causes tr[data-check]');
+  const top = document.querySelector('table.mistakes tr[data-students]') || first;
   const rows = [...document.querySelectorAll('table.heat tr[data-exercise]')].map(r =>
     [...r.querySelectorAll('td.n')].map(td => Number(td.textContent)).reduce((a, b) => a + b, 0));
-  const box = first ? first.getBoundingClientRect() : null;
+  const box = top ? top.getBoundingClientRect() : null;
   return JSON.stringify({
     first: first ? first.dataset.check : null,
     firstText: first ? first.textContent : '',
@@ -66,7 +68,7 @@ def main():
             if r["first"] != args.first:
                 failures.append(f"the first row of what the class gets wrong is {r['first']}, not {args.first}")
             if not r["firstShown"]:
-                failures.append("the first row is not on the first screen")
+                failures.append("the page's first row (the mistakes at a glance) is not on the first screen")
             if not r["sums"]:
                 failures.append("no exercise in the heat map")
             failures += [f"a heat-map row counts {s} students, not {args.students}" for s in r["sums"]

@@ -68,12 +68,14 @@ fn class(pool: &[Vec<&Mistake>]) -> Vec<(String, Vec<usize>)> {
 struct Page {
     causes: BTreeMap<String, Vec<(String, BTreeSet<String>)>>,
     clusters: BTreeMap<String, Vec<BTreeSet<String>>>,
+    /// The mistakes at a glance: the checks failed together, and by whom.
+    glance: Vec<(BTreeSet<String>, BTreeSet<String>)>,
 }
 
 impl Page {
     fn read(file: &Path) -> Page {
         let html = std::fs::read_to_string(file).unwrap();
-        let (mut causes, mut clusters) = (BTreeMap::new(), BTreeMap::new());
+        let (mut causes, mut clusters, mut glance) = (BTreeMap::new(), BTreeMap::new(), Vec::new());
         let attribute = |tag: &str, name: &str| -> Option<String> {
             let start = tag.find(&format!("{name}=\""))? + name.len() + 2;
             Some(tag[start..start + tag[start..].find('"')?].to_owned())
@@ -81,6 +83,12 @@ impl Page {
         let students = |list: String| -> BTreeSet<String> { list.split('\n').map(str::to_owned).collect() };
         for row in html.split("<tr ").skip(1) {
             let row = &row[..row.find("</tr>").unwrap_or(row.len())];
+            if let (Some(checks), Some(list)) =
+                (attribute(row, "data-checks"), attribute(row, "data-students"))
+            {
+                glance.push((students(checks), students(list)));
+                continue;
+            }
             let Some(check) = attribute(row, "data-check") else { continue };
             if row.starts_with("class=\"clusters\"") {
                 let groups = row
@@ -94,7 +102,7 @@ impl Page {
                 causes.entry(check).or_insert_with(Vec::new).push((cause, students(list)));
             }
         }
-        Page { causes, clusters }
+        Page { causes, clusters, glance }
     }
 }
 
@@ -230,6 +238,18 @@ fn a_class_of_planted_mistakes_clusters_by_mistake_into_a_gradebook_of_the_singl
             }
             found.map(|(_, students)| students.clone())
         };
+        // At a glance, its students fail its check together (with those its mistake costs them).
+        if judged.len() >= 2
+            && !page
+                .glance
+                .iter()
+                .any(|(checks, students)| *students == judged && checks.contains(&mistake.caught_by))
+        {
+            problems.push(format!(
+                "{}: not at a glance as {judged:?} failing {}",
+                mistake.name, mistake.caught_by
+            ));
+        }
         if group.as_ref() != Some(&judged) {
             problems.push(format!(
                 "{} ({}): planted in {planted:?}, judged in {judged:?}, grouped as {group:?}",

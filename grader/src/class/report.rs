@@ -1,7 +1,10 @@
 // INSTRUCTOR ONLY: left out of the handout, with the rest of `grader class`.
 //! `DIR/class.html`: what a class gets wrong, for the next lecture. One page, offline, no script:
 //!
-//! - first, the checks the most students fail, each with its causes (the checks' "likely: …"),
+//! - first, the class's mistakes at a glance: the students who fail the same checks together,
+//!   each check for one cause or with one wrong picture (likely one mistake), the most students
+//!   first, with the checks, the cause and who;
+//! - then the checks the most students fail, each with its causes (the checks' "likely: …"),
 //!   how many students each, and who; under a picture's check, its clusters of wrong pictures
 //!   (`clusters.rs`), the largest first, each shown by one picture and its difference from the
 //!   expected, with its size, its students and the cause the check gave most often in it;
@@ -50,7 +53,9 @@ pub fn html(grades: &[StudentGrade], out: &Path) -> String {
     );
     let mut missing = Vec::new();
     let clusters = clusters(out, grades, &mut missing);
-    causes(&mut page, &graded, &clusters);
+    let failed = failed_causes(&graded);
+    at_a_glance(&mut page, &failed, &clusters);
+    causes(&mut page, graded.len(), &failed, &clusters);
     heat_map(&mut page, &graded);
     let not_graded: Vec<&StudentGrade> = grades.iter().filter(|g| g.error.is_some()).collect();
     if !not_graded.is_empty() {
@@ -101,9 +106,8 @@ pub fn cause_key(cause: &str) -> String {
     key
 }
 
-/// The checks failed by the most students, most first, each with its causes and, for a
-/// picture's check, its clusters of wrong pictures.
-fn causes(page: &mut String, graded: &[&StudentGrade], clusters: &[Clusters]) {
+/// Every failed check of `graded`, with its causes.
+fn failed_causes<'a>(graded: &[&'a StudentGrade]) -> BTreeMap<&'a str, Causes<'a>> {
     let mut failed: BTreeMap<&str, Causes> = BTreeMap::new();
     for g in graded {
         for c in g.checks.iter().filter(|c| c.status == "FAILED") {
@@ -113,6 +117,77 @@ fn causes(page: &mut String, graded: &[&StudentGrade], clusters: &[Clusters]) {
             group.1.push(&g.student);
         }
     }
+    failed
+}
+
+/// A check that sets students apart: its id, the cause, and whether it is a picture's cluster.
+type Apart<'a> = (&'a str, &'a str, bool);
+
+/// At most this many of the class's mistakes at a glance.
+const AT_A_GLANCE: usize = 20;
+
+/// The class's mistakes at a glance: every group of students a check sets apart (a cause group;
+/// for a picture's check, a cluster of wrong pictures), the groups of the same students joined:
+/// students who fail those checks together, each for one cause or with one picture, likely made
+/// one mistake. Groups of two students or more, the largest first; the cause shown is the first
+/// function's check's (it names the exercise), else the first picture's.
+fn at_a_glance(page: &mut String, failed: &BTreeMap<&str, Causes>, clusters: &[Clusters]) {
+    // Per set of students, the checks (by id) and causes that set them apart.
+    let mut together: BTreeMap<Vec<&str>, Vec<Apart>> = BTreeMap::new();
+    for (check, causes) in failed {
+        if let Some(pictures) = clusters.iter().find(|c| c.check == *check) {
+            for cluster in &pictures.clusters {
+                let mut students = cluster.students.clone();
+                students.sort_unstable();
+                together.entry(students).or_default().push((check, cluster.cause.0, true));
+            }
+        } else {
+            for (cause, students) in causes.values() {
+                let mut students = students.clone();
+                students.sort_unstable();
+                together.entry(students).or_default().push((check, cause, false));
+            }
+        }
+    }
+    let mut mistakes: Vec<(Vec<&str>, Vec<Apart>)> =
+        together.into_iter().filter(|(students, _)| students.len() >= 2).collect();
+    if mistakes.is_empty() {
+        return;
+    }
+    mistakes.sort_by(|a, b| b.0.len().cmp(&a.0.len()).then(a.1[0].0.cmp(b.1[0].0)));
+    let _ = write!(
+        page,
+        "<h2 id=\"mistakes\">The class's mistakes at a glance</h2><p>Students who fail the same checks \
+         together, each check for one cause or with one wrong picture: likely one mistake each. The \
+         most students first{}.</p><table class=\"mistakes\"><tr><th>students</th><th>fail together\
+         </th><th>likely cause</th><th>who</th></tr>",
+        if mistakes.len() > AT_A_GLANCE {
+            format!("; the first {AT_A_GLANCE} of {}", mistakes.len())
+        } else {
+            String::new()
+        }
+    );
+    for (students, checks) in mistakes.iter().take(AT_A_GLANCE) {
+        let cause = checks.iter().find(|c| !c.2).unwrap_or(&checks[0]).1;
+        let ids: Vec<&str> = checks.iter().map(|c| c.0).collect();
+        let _ = write!(
+            page,
+            "<tr data-checks=\"{}\" data-students=\"{}\"><td class=\"n\">{}</td><td class=\"id\">{}</td>\
+             <td>{}</td><td>{}</td></tr>",
+            escape(&ids.join("\n")),
+            escape(&students.join("\n")),
+            students.len(),
+            ids.iter().map(|id| escape(id)).collect::<Vec<_>>().join("<br>"),
+            escape(cause),
+            escape(&students.join(", "))
+        );
+    }
+    page.push_str("</table>");
+}
+
+/// The checks failed by the most students, most first, each with its causes and, for a
+/// picture's check, its clusters of wrong pictures.
+fn causes(page: &mut String, graded: usize, failed: &BTreeMap<&str, Causes>, clusters: &[Clusters]) {
     let mut checks: Vec<(&str, usize, &Causes)> =
         failed.iter().map(|(id, causes)| (*id, causes.values().map(|c| c.1.len()).sum(), causes)).collect();
     checks.sort_by(|a, b| b.1.cmp(&a.1).then(a.0.cmp(b.0)));
@@ -127,9 +202,8 @@ fn causes(page: &mut String, graded: &[&StudentGrade], clusters: &[Clusters]) {
     for (id, count, causes) in checks {
         let head = |rows: usize| {
             format!(
-                "<td rowspan=\"{rows}\" class=\"id\">{}</td><td rowspan=\"{rows}\" class=\"n\">{count} of {}</td>",
-                escape(id),
-                graded.len()
+                "<td rowspan=\"{rows}\" class=\"id\">{}</td><td rowspan=\"{rows}\" class=\"n\">{count} of {graded}</td>",
+                escape(id)
             )
         };
         // A picture's check: its clusters of wrong pictures, each with the cause its check gave
@@ -350,6 +424,11 @@ mod tests {
         assert!(page.contains("the far root <span class=\"n\">(2)</span></td><td>ann, ben</td>"), "{page}");
         assert!(page.contains("data-cause=\"the far root\" data-students=\"ann\nben\""), "{page}");
         assert!(page.contains("cy &lt;3"), "names are escaped");
+        // At a glance, first: ann and ben fail 02/sphere/unit for one cause (ben's plane and cy's
+        // sphere are one student's each).
+        let glance = page.find("<tr data-checks=\"02/sphere/unit\" data-students=\"ann\nben\">").unwrap();
+        assert!(glance < sphere, "{page}");
+        assert_eq!(page.matches("<tr data-checks=").count(), 1, "{page}");
         // The heat map: 02/plane passed by one, failed by one, not started by one.
         let row = &page[page.find("data-exercise=\"02/plane\"").unwrap()..];
         let cells: Vec<&str> =
