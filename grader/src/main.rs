@@ -137,8 +137,9 @@ enum Cmd {
         args: Vec<String>,
     },
     // INSTRUCTOR BEGIN
-    /// Grade a whole class: every submission folder in SUBMISSIONS as `grade --submission` grades
-    /// it; per student results.json and grade.json, and gradebook.csv, in DIR.
+    /// Grade a whole class: every submission folder in SUBMISSIONS (or a zip of them) as `grade
+    /// --submission` grades it; in DIR, gradebook.csv, class.html (what the class gets wrong, its
+    /// wrong pictures in clusters) and per student results.json and grade.json.
     Class(class::ClassArgs),
     /// Speed against accuracy, side by side (run with --release).
     #[command(disable_help_flag = true)]

@@ -310,7 +310,10 @@ fn results_grades(export: &Path, out: &Path) -> Result<Vec<StudentGrade>, String
 fn kept_grades(out: &Path) -> Result<Vec<StudentGrade>, String> {
     let students = out.join("students");
     let mut grades = Vec::new();
-    for entry in std::fs::read_dir(&students).map_err(|e| format!("{}: {e}", students.display()))? {
+    let entries = std::fs::read_dir(&students).map_err(|e| {
+        format!("{}: {e} (no grades to report: grade the class into it first)", students.display())
+    })?;
+    for entry in entries {
         let folder = entry.map_err(|e| format!("{}: {e}", students.display()))?.path();
         let file = folder.join("grade.json");
         let text = std::fs::read_to_string(&file).map_err(|e| format!("{}: {e}", file.display()))?;
