@@ -65,11 +65,20 @@ pub fn prepare(
     })?;
     remove_judges_only(&work)?;
     let ws = Workspace::open(&root)?;
+    // What the submission's folder holds, links resolved: a link out of it (to the instructor's
+    // reference, which the grader may read) is not the student's work.
+    let inside = submission.canonicalize().map_err(|e| format!("{}: {e}", submission.display()))?;
     let mut taken = Vec::new();
     for lecture in &ws.lectures {
         let source = submitted.join(&lecture.folder).join("src");
         let target = work.join("lectures").join(&lecture.folder).join("src");
         if source.is_dir() {
+            if !source.canonicalize().is_ok_and(|real| real.starts_with(&inside)) {
+                return Err(format!(
+                    "{}: a link to a folder outside the submission (submit the files themselves)",
+                    source.display()
+                ));
+            }
             check_size(&source)?;
             mirror(&source, &target, &|_| true)?;
             taken.push(lecture.number.clone());

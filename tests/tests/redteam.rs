@@ -150,6 +150,49 @@ fn files_outside_the_lectures_sources_change_nothing() {
     }
 }
 
+/// A lecture's `src/` (or its folder, or `lectures/`) submitted as a link to the instructor's
+/// reference, which the grader may read: before, graded as the student's work (full marks for a
+/// handout's stubs); now the submission is refused, naming the link, and nothing is graded.
+#[cfg(unix)]
+#[test]
+fn a_link_out_of_the_submission_is_refused_not_graded() {
+    let _turn = WORK.lock().unwrap_or_else(|e| e.into_inner());
+    let base = submission("linked-source", &[]);
+    let dir = scratch().join("submissions/linked");
+    for (link, to) in [
+        ("lectures/01-transforms/src", "lectures/01-transforms/src"),
+        ("lectures/01-transforms", "lectures/01-transforms"),
+        ("lectures", "lectures"),
+    ] {
+        let _ = std::fs::remove_dir_all(&dir);
+        copy_tree(&base, &dir);
+        let path = dir.join(link);
+        std::fs::remove_dir_all(&path).unwrap();
+        std::os::unix::fs::symlink(root().join(to), &path).unwrap();
+        let work = scratch().join("work");
+        let out = Command::new(grader_binary())
+            .args(["grade", "--submission", dir.to_str().unwrap(), "--workdir", work.to_str().unwrap(), "01"])
+            .output()
+            .unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert!(
+            !out.status.success(),
+            "{link}: graded
+{stderr}"
+        );
+        assert!(
+            stderr.contains("a link to a folder outside the submission")
+                && stderr.contains("01-transforms/src"),
+            "{link}: {stderr}"
+        );
+        assert!(
+            !stderr.contains("points"),
+            "{link}: nothing is graded
+{stderr}"
+        );
+    }
+}
+
 /// (c) returns, as its geometry image, the snapshot of that kind and size read from its lecture's
 /// folder (where the work folder once had the snapshots), else a blank image: the student has no
 /// solution of their own.
