@@ -161,17 +161,7 @@ mod tests {
             cause: Some(format!("the geometry differs at pixel ({}, 3)", name.len())),
             picture: Some(folder),
         };
-        StudentGrade {
-            student: name.into(),
-            submitters: Vec::new(),
-            fingerprint: String::new(),
-            judge: Default::default(),
-            score: 0,
-            max_score: 3,
-            seconds: 0.0,
-            error: None,
-            checks: vec![check],
-        }
+        StudentGrade::new(name, vec![check])
     }
 
     #[test]

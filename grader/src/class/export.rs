@@ -168,17 +168,7 @@ pub fn grade_from_results(student: &str, results: &serde_json::Value) -> Student
             }
         })
         .collect();
-    StudentGrade {
-        student: student.to_owned(),
-        submitters: Vec::new(),
-        fingerprint: String::new(),
-        judge: Default::default(),
-        score: checks.iter().map(|c| c.points).sum(),
-        max_score: checks.iter().map(|c| c.max_points).sum(),
-        seconds: 0.0,
-        error: None,
-        checks,
-    }
+    StudentGrade::new(student, checks)
 }
 
 #[cfg(test)]

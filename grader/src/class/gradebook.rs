@@ -85,15 +85,8 @@ mod tests {
         let dir = std::env::temp_dir().join(format!("raylab-gradebook-{}", std::process::id()));
         std::fs::create_dir_all(&dir).unwrap();
         let student = |name: &str, checks: Vec<CheckGrade>, error: Option<&str>| StudentGrade {
-            student: name.into(),
-            submitters: Vec::new(),
-            fingerprint: String::new(),
-            judge: Default::default(),
-            score: checks.iter().map(|c| c.points).sum(),
-            max_score: checks.iter().map(|c| c.max_points).sum(),
-            seconds: 1.0,
             error: error.map(str::to_owned),
-            checks,
+            ..StudentGrade::new(name, checks)
         };
         let grades = [
             student("ada", vec![check("02/hit_plane/unit", 1, 1), check("02/hit_plane/grazing", 2, 2)], None),

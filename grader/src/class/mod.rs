@@ -127,7 +127,7 @@ pub struct ClassOptions {
 const GRADE_FORMAT: u32 = 2;
 
 /// One student's grade, as `students/NAME/grade.json` keeps it.
-#[derive(Clone, Debug, Serialize, Deserialize)]
+#[derive(Clone, Debug, Default, Serialize, Deserialize)]
 pub struct StudentGrade {
     /// The submission's folder.
     pub student: String,
@@ -147,6 +147,24 @@ pub struct StudentGrade {
     #[serde(skip_serializing_if = "Option::is_none")]
     pub error: Option<String>,
     pub checks: Vec<CheckGrade>,
+}
+
+impl StudentGrade {
+    /// The grade of `checks`, its points and the points possible summed from them.
+    pub fn new(student: &str, checks: Vec<CheckGrade>) -> Self {
+        Self {
+            student: student.to_owned(),
+            score: checks.iter().map(|c| c.points).sum(),
+            max_score: checks.iter().map(|c| c.max_points).sum(),
+            checks,
+            ..Self::default()
+        }
+    }
+
+    /// A submission that could not be graded, and why.
+    pub fn not_graded(student: &str, error: String) -> Self {
+        Self { student: student.to_owned(), error: Some(error), ..Self::default() }
+    }
 }
 
 /// One check of a student's grade.
@@ -284,17 +302,7 @@ fn results_grades(export: &Path, out: &Path) -> Result<Vec<StudentGrade>, String
     for (name, submission) in metadata {
         let mut grade = match &submission.results {
             Some(results) => export::grade_from_results(&name, results),
-            None => StudentGrade {
-                student: name.clone(),
-                submitters: Vec::new(),
-                fingerprint: String::new(),
-                judge: Default::default(),
-                score: 0,
-                max_score: 0,
-                seconds: 0.0,
-                error: Some("no autograder results in the export".to_owned()),
-                checks: Vec::new(),
-            },
+            None => StudentGrade::not_graded(&name, "no autograder results in the export".to_owned()),
         };
         grade.submitters = submission.submitters;
         let dir = out.join("students").join(&name);
@@ -370,12 +378,15 @@ impl Class<'_> {
         // The same files graded before: what the tree's changes since may have moved, if anything.
         let earlier = earlier_grade(&folder)
             .filter(|e| !fingerprint.is_empty() && e.fingerprint == fingerprint && e.error.is_none());
-        // Kept in part only with its Gradescope results to merge into.
+        let stale = earlier.as_ref().and_then(|e| self.stale(e));
+        // Kept in part only with its Gradescope results to merge into (read only then).
         let file = folder.join("results.json");
-        let kept_results: Option<serde_json::Value> =
-            std::fs::read_to_string(&file).ok().and_then(|t| serde_json::from_str(&t).ok());
-        let stale =
-            earlier.as_ref().and_then(|e| self.stale(e)).filter(|s| s.is_empty() || kept_results.is_some());
+        let kept_results: Option<serde_json::Value> = stale
+            .as_ref()
+            .filter(|s| !s.is_empty())
+            .and_then(|_| std::fs::read_to_string(&file).ok())
+            .and_then(|t| serde_json::from_str(&t).ok());
+        let stale = stale.filter(|s| s.is_empty() || kept_results.is_some());
         let earlier = earlier.filter(|_| stale.is_some());
         if let (Some(earlier), Some(stale)) = (&earlier, &stale)
             && stale.is_empty()
@@ -439,30 +450,11 @@ impl Class<'_> {
                 if let Some(earlier) = earlier.filter(|_| !regraded.is_empty()) {
                     checks = regrade::merge(earlier.checks, checks, &regraded);
                 }
-                StudentGrade {
-                    student: name.to_owned(),
-                    submitters,
-                    fingerprint,
-                    judge: print.clone(),
-                    score: checks.iter().map(|c| c.points).sum(),
-                    max_score: checks.iter().map(|c| c.max_points).sum(),
-                    seconds,
-                    error: None,
-                    checks,
-                }
+                StudentGrade::new(name, checks)
             }
-            Err(error) => StudentGrade {
-                student: name.to_owned(),
-                submitters,
-                fingerprint,
-                judge: print.clone(),
-                score: 0,
-                max_score: 0,
-                seconds,
-                error: Some(error),
-                checks: Vec::new(),
-            },
+            Err(error) => StudentGrade::not_graded(name, error),
         };
+        let student = StudentGrade { submitters, fingerprint, judge: print.clone(), seconds, ..student };
         save_grade(&folder, &student);
         let graded = if regraded.is_empty() || student.error.is_some() {
             Graded::Whole

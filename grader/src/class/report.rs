@@ -373,17 +373,7 @@ mod tests {
     }
 
     fn student(name: &str, checks: Vec<CheckGrade>) -> StudentGrade {
-        StudentGrade {
-            student: name.into(),
-            submitters: Vec::new(),
-            fingerprint: String::new(),
-            judge: Default::default(),
-            score: checks.iter().map(|c| c.points).sum(),
-            max_score: checks.len() as u32,
-            seconds: 0.0,
-            error: None,
-            checks,
-        }
+        StudentGrade::new(name, checks)
     }
 
     #[test]
