@@ -34,9 +34,14 @@ pub fn to_srgb8(c: Color) -> [u8; 3] {
 
 /// Three 8-bit sRGB values as a linear colour.
 pub fn from_srgb8(p: [u8; 3]) -> Color {
-    let d = |v: u8| srgb_to_linear(v as Float / 255.0);
+    let d = |v: u8| SRGB8_TO_LINEAR[v as usize];
     Color::new(d(p[0]), d(p[1]), d(p[2]))
 }
+
+/// [`srgb_to_linear`] of each 8-bit value v / 255, computed once: a picture read from a PNG decodes
+/// three values per pixel, each one of these 256 (the same values, a `powf` fewer each).
+static SRGB8_TO_LINEAR: std::sync::LazyLock<[Float; 256]> =
+    std::sync::LazyLock::new(|| std::array::from_fn(|v| srgb_to_linear(v as Float / 255.0)));
 
 #[cfg(test)]
 mod tests {
@@ -49,6 +54,14 @@ mod tests {
         // Below the knee the curve is linear with slope 12.92.
         approx::assert_abs_diff_eq!(linear_to_srgb(0.001), 0.01292, epsilon = 1e-7);
         assert_eq!(to_srgb8(Color::new(0.0, 1.0, 2.0)), [0, 255, 255]);
+    }
+
+    #[test]
+    fn the_table_holds_the_curve_s_own_values() {
+        for v in 0..=255u8 {
+            let linear = srgb_to_linear(Float::from(v) / 255.0);
+            assert_eq!(from_srgb8([v, 0, 255]), Color::new(linear, 0.0, 1.0), "value {v}");
+        }
     }
 
     #[test]

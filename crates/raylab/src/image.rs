@@ -94,18 +94,18 @@ impl Image {
     pub fn save_png(&self, path: impl AsRef<Path>) -> Result<(), ImageError> {
         let path = path.as_ref();
         self.check_finite(path)?;
-        let bytes: Vec<u8> = self.pixels.iter().flat_map(|&c| to_srgb8(c)).collect();
-        let buffer = image::RgbImage::from_raw(self.width, self.height, bytes).expect("buffer size");
-        buffer.save_with_format(path, image::ImageFormat::Png).map_err(|e| io_error(path, e))
+        self.to_srgb8().save_png(path)
     }
 
     /// Reads a PNG (or any 8-bit RGB image the `image` crate reads) as linear colours.
     pub fn load_png(path: impl AsRef<Path>) -> Result<Self, ImageError> {
-        let path = path.as_ref();
-        let decoded = image::open(path).map_err(|e| io_error(path, e))?.to_rgb8();
-        let (width, height) = decoded.dimensions();
-        let pixels = decoded.pixels().map(|p| from_srgb8(p.0)).collect();
-        Ok(Self { width, height, pixels })
+        Ok(Srgb8::load_png(path)?.to_linear())
+    }
+
+    /// The image as 8-bit sRGB values, rounded to nearest (a NaN channel is 0).
+    pub fn to_srgb8(&self) -> Srgb8 {
+        let bytes = self.pixels.iter().flat_map(|&c| to_srgb8(c)).collect();
+        Srgb8 { width: self.width, height: self.height, bytes }
     }
 
     /// Decodes a PNG (or any 8-bit RGB image the `image` crate reads) held in
@@ -113,10 +113,7 @@ impl Image {
     /// decoder's default limits bound what a small file may decode to (512 MiB).
     pub fn decode_png(bytes: &[u8], path: impl AsRef<Path>) -> Result<Self, ImageError> {
         let path = path.as_ref();
-        let decoded = image::load_from_memory(bytes).map_err(|e| io_error(path, e))?.to_rgb8();
-        let (width, height) = decoded.dimensions();
-        let pixels = decoded.pixels().map(|p| from_srgb8(p.0)).collect();
-        Ok(Self { width, height, pixels })
+        Ok(Srgb8::decode_png(bytes, path)?.to_linear())
     }
 
     /// Writes a 32-bit float RGB OpenEXR with the linear values unchanged
@@ -139,6 +136,65 @@ impl Image {
         let pixels =
             decoded.pixels().map(|p| Vec3::new(p.0[0] as Float, p.0[1] as Float, p.0[2] as Float)).collect();
         Ok(Self { width, height, pixels })
+    }
+}
+
+/// A picture as a PNG holds it: 8-bit sRGB values r, g, b per pixel, row-major from the top left.
+/// What the grader compares and writes without going through linear colours and back.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Srgb8 {
+    pub width: u32,
+    pub height: u32,
+    /// `3 · width · height` values.
+    pub bytes: Vec<u8>,
+}
+
+impl Srgb8 {
+    /// Reads a PNG (or any 8-bit RGB image the `image` crate reads).
+    pub fn load_png(path: impl AsRef<Path>) -> Result<Self, ImageError> {
+        let path = path.as_ref();
+        let decoded = image::open(path).map_err(|e| io_error(path, e))?.to_rgb8();
+        let (width, height) = decoded.dimensions();
+        Ok(Self { width, height, bytes: decoded.into_raw() })
+    }
+
+    /// Decodes a PNG (or any 8-bit RGB image the `image` crate reads) held in `bytes`, read from
+    /// `path` (named in errors), within the decoder's default limits (512 MiB).
+    pub fn decode_png(bytes: &[u8], path: impl AsRef<Path>) -> Result<Self, ImageError> {
+        let path = path.as_ref();
+        let decoded = image::load_from_memory(bytes).map_err(|e| io_error(path, e))?.to_rgb8();
+        let (width, height) = decoded.dimensions();
+        Ok(Self { width, height, bytes: decoded.into_raw() })
+    }
+
+    /// Writes a PNG.
+    pub fn save_png(&self, path: impl AsRef<Path>) -> Result<(), ImageError> {
+        let path = path.as_ref();
+        let size = 3 * self.width as usize * self.height as usize;
+        if self.bytes.len() != size {
+            let message = format!(
+                "{} values for a {}×{} picture (3 per pixel)",
+                self.bytes.len(),
+                self.width,
+                self.height
+            );
+            return Err(ImageError::Io { path: path.to_owned(), message });
+        }
+        image::save_buffer_with_format(
+            path,
+            &self.bytes,
+            self.width,
+            self.height,
+            image::ExtendedColorType::Rgb8,
+            image::ImageFormat::Png,
+        )
+        .map_err(|e| io_error(path, e))
+    }
+
+    /// The picture as linear colours.
+    pub fn to_linear(&self) -> Image {
+        let pixels = self.bytes.chunks_exact(3).map(|p| from_srgb8([p[0], p[1], p[2]])).collect();
+        Image { width: self.width, height: self.height, pixels }
     }
 }
 
@@ -170,6 +226,22 @@ mod tests {
         }
         // The file is a real PNG: the signature bytes.
         assert_eq!(&std::fs::read(&path).unwrap()[..8], b"\x89PNG\r\n\x1a\n");
+    }
+
+    #[test]
+    fn srgb8_pictures_are_written_and_read_byte_for_byte() {
+        let bytes: Vec<u8> = (0..18).map(|i| (i * 15) as u8).collect();
+        let picture = Srgb8 { width: 3, height: 2, bytes };
+        let path = temp("srgb8.png");
+        picture.save_png(&path).unwrap();
+        assert_eq!(Srgb8::load_png(&path).unwrap(), picture);
+        // The linear image it reads as is the one `Image::load_png` reads, and back the same bytes.
+        assert_eq!(Image::load_png(&path).unwrap(), picture.to_linear());
+        assert_eq!(picture.to_linear().to_srgb8(), picture);
+        // A size its values do not fill is refused, naming the file.
+        let short = Srgb8 { width: 4, height: 2, ..picture };
+        let err = short.save_png(temp("short.png")).unwrap_err().to_string();
+        assert!(err.contains("short.png") && err.contains("18 values for a 4×2 picture"), "{err}");
     }
 
     #[test]

@@ -55,10 +55,12 @@ pub fn geometry_images(lecture: &str, scene: &Scene) -> Result<[Image; 3], Strin
 #[derive(Default)]
 struct Answers(Mutex<Vec<([u64; 8], Option<Hit>)>>);
 
-/// A query as the answers hold it: its ray and range, to the bit.
+/// A query as the answers hold it: its ray and range, to the bit. (Written out: the checks build
+/// at opt-level 0, where an array's `map` cost a fifth of a geometry check of lecture 03.)
 fn query(ray: &Ray, range: Interval) -> [u64; 8] {
     let (o, d) = (ray.origin, ray.dir);
-    [o.x, o.y, o.z, d.x, d.y, d.z, range.min, range.max].map(|x| x.to_bits() as u64)
+    let bits = |x: Float| x.to_bits() as u64;
+    [bits(o.x), bits(o.y), bits(o.z), bits(d.x), bits(d.y), bits(d.z), bits(range.min), bits(range.max)]
 }
 
 /// `objects`, its answers kept in `answers`.

@@ -5,6 +5,7 @@
 use std::path::Path;
 
 use raylab::compare::compare;
+use raylab::image::{ImageError, Srgb8};
 use raylab::{Color, Image, Scene};
 use raylab_protocol::{VIEW_DATA, VIEW_MISSING};
 
@@ -35,12 +36,17 @@ fn compare_with_snapshot(
     dir: &Path,
 ) -> Result<Compared, Failure> {
     let case = format!("{}/{}", file.folder, file.name());
-    let expected = Image::load_png(stage_snapshot(file, stage))
-        .map_err(|e| fail(&case, "a snapshot", no_snapshot(file, e), ""))?;
+    let snapshot = stage_snapshot(file, stage);
+    let png = std::fs::read(&snapshot)
+        .map_err(|e| ImageError::Io { path: snapshot.clone(), message: e.to_string() })
+        .and_then(|png| Ok((Srgb8::decode_png(&png, &snapshot)?, png)));
+    let (expected_srgb8, png) = png.map_err(|e| fail(&case, "a snapshot", no_snapshot(file, e), ""))?;
+    let expected = expected_srgb8.to_linear();
     let comparison = compare(&expected, yours, CHANNEL_THRESHOLD).map_err(|e| {
         fail(&case, format!("{}×{}", expected.width, expected.height), e, "one pixel per (x, y), row by row")
     })?;
-    let images = write_images(dir, &expected, yours).map_err(|e| fail(&case, "images written", e, ""))?;
+    let images = write_images(dir, (&png, &expected_srgb8), yours)
+        .map_err(|e| fail(&case, "images written", e, ""))?;
     let measured = format!(
         "{:.3} % of pixels differ by more than {CHANNEL_THRESHOLD} steps (allowed {:.2} %); mean FLIP {:.4}",
         100.0 * comparison.fraction_over(),
@@ -210,51 +216,56 @@ fn write_view(
     std::fs::write(dir.join(VIEW_DATA), script).map_err(|e| format!("{}: {e}", dir.display()))
 }
 
+/// A picture as the report shows it and FLIP compares it: its 8-bit sRGB values, a NaN or
+/// infinite pixel magenta.
+pub fn shown(image: &Image) -> Srgb8 {
+    let mut srgb8 = image.to_srgb8();
+    for (pixel, colour) in srgb8.bytes.chunks_exact_mut(3).zip(&image.pixels) {
+        if !colour.is_finite() {
+            pixel.copy_from_slice(&[255, 0, 255]);
+        }
+    }
+    srgb8
+}
+
 /// FLIP's per-pixel error between `expected` and `yours` (same size), on their 8-bit sRGB values
-/// at nv-flip's default viewing distance (0 identical, 1 opposite); a NaN pixel shown as magenta.
-pub fn flip_error(expected: &Image, yours: &Image) -> nv_flip::FlipImageFloat {
-    let rgb8 = |image: &Image| -> Vec<u8> {
-        image
-            .pixels
-            .iter()
-            .flat_map(|c| if c.is_finite() { raylab::color::to_srgb8(*c) } else { [255, 0, 255] })
-            .collect()
-    };
-    let (w, h) = (expected.width, expected.height);
+/// at nv-flip's default viewing distance (0 identical, 1 opposite).
+pub fn flip_error(expected: &Srgb8, yours: &Srgb8) -> nv_flip::FlipImageFloat {
     nv_flip::flip(
-        nv_flip::FlipImageRgb8::with_data(w, h, &rgb8(expected)),
-        nv_flip::FlipImageRgb8::with_data(w, h, &rgb8(yours)),
+        nv_flip::FlipImageRgb8::with_data(expected.width, expected.height, &expected.bytes),
+        nv_flip::FlipImageRgb8::with_data(yours.width, yours.height, &yours.bytes),
         nv_flip::DEFAULT_PIXELS_PER_DEGREE,
     )
 }
 
-/// Writes expected.png, yours.png and diff.png (FLIP's error map, magma
-/// colours) into `dir`, and measures the FLIP error.
-pub fn write_images(dir: &Path, expected: &Image, yours: &Image) -> Result<Images, String> {
+/// Writes expected.png (the snapshot's file, whose values `expected` holds), yours.png (a
+/// NaN pixel magenta) and diff.png (FLIP's error map, magma colours) into `dir`, and measures the
+/// FLIP error. Each picture is turned into 8-bit values once, for FLIP and its file alike.
+pub fn write_images(dir: &Path, expected: (&[u8], &Srgb8), yours: &Image) -> Result<Images, String> {
+    let (png, expected) = expected;
     std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
-    let (w, h) = (expected.width, expected.height);
-    let error = flip_error(expected, yours);
+    let yours = shown(yours);
+    let error = flip_error(expected, &yours);
     let values = error.to_vec();
     let flip_mean = values.iter().map(|&v| v as f64).sum::<f64>() / values.len().max(1) as f64;
     let flip_fraction_over =
         values.iter().filter(|&&v| v > FLIP_THRESHOLD).count() as f64 / values.len().max(1) as f64;
-    let magma = error.apply_color_lut(&nv_flip::magma_lut()).to_vec();
-    let diff: Vec<Color> =
-        magma.chunks_exact(3).map(|p| raylab::color::from_srgb8([p[0], p[1], p[2]])).collect();
-    let save = |image: &Image, name: &str| -> Result<String, String> {
+    let diff = Srgb8 {
+        width: expected.width,
+        height: expected.height,
+        bytes: error.apply_color_lut(&nv_flip::magma_lut()).to_vec(),
+    };
+    let save = |picture: &Srgb8, name: &str| -> Result<String, String> {
         let path = dir.join(name);
-        image.save_png(&path).map_err(|e| e.to_string())?;
+        picture.save_png(&path).map_err(|e| e.to_string())?;
         Ok(path.to_string_lossy().into_owned())
     };
-    let showable = Image::from_pixels(
-        w,
-        h,
-        yours.pixels.iter().map(|c| if c.is_finite() { *c } else { Color::new(1.0, 0.0, 1.0) }).collect(),
-    );
+    let expected_png = dir.join("expected.png");
+    std::fs::write(&expected_png, png).map_err(|e| format!("{}: {e}", expected_png.display()))?;
     Ok(Images {
-        expected: save(expected, "expected.png")?,
-        yours: save(&showable, "yours.png")?,
-        diff: save(&Image::from_pixels(w, h, diff), "diff.png")?,
+        expected: expected_png.to_string_lossy().into_owned(),
+        yours: save(&yours, "yours.png")?,
+        diff: save(&diff, "diff.png")?,
         flip_mean,
         flip_fraction_over,
     })
