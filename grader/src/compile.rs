@@ -48,6 +48,8 @@ pub struct Built {
 pub struct BuildOptions {
     /// The lectures wanted (their prerequisites come in by themselves).
     pub lectures: BTreeSet<String>,
+    /// The tools on the complete tracer (`render`, `bless`…), with every lecture: not to grade.
+    pub tools: bool,
     pub hidden: bool,
     pub release: bool,
     pub f64: bool,
@@ -195,9 +197,12 @@ fn cargo_build(
     lectures: &BTreeSet<String>,
 ) -> Result<Attempt, String> {
     let mut features: Vec<String> = lectures.iter().map(|l| format!("l{l}")).collect();
-    // Every lecture built: the complete tracer, its tools and the final images.
+    // Every lecture built: the complete tracer and the final images (and the tools, asked for).
     if ws.lectures.iter().all(|l| lectures.contains(&l.number)) {
         features.push("complete".into());
+        if options.tools {
+            features.push("tools".into());
+        }
     }
     if options.hidden {
         features.push("hidden".into());

@@ -138,6 +138,7 @@ pub fn grade(ws: &Workspace, options: &GradeOptions) -> Result<Grade, String> {
             ws,
             &BuildOptions {
                 lectures: wanted.clone(),
+                tools: false,
                 // Graded with a judge, the hidden checks are the judge's alone: the student's build
                 // has neither their code nor their answers (`raylab-checks/src/remote.rs`).
                 hidden: options.hidden && !submission,

@@ -345,6 +345,7 @@ fn forward(tool: &str, args: &[String]) -> Result<bool, String> {
                 &ws,
                 &compile::BuildOptions {
                     lectures: all,
+                    tools: true,
                     hidden: false,
                     release: options.release,
                     f64: options.f64,

@@ -187,6 +187,7 @@ pub fn judge(root: &Path, options: &crate::grade::GradeOptions) -> Result<PathBu
         &judge_ws,
         &crate::compile::BuildOptions {
             lectures: judge_ws.lectures.iter().map(|l| l.number.clone()).collect(),
+            tools: false,
             hidden: true,
             release: options.release,
             f64: options.f64,

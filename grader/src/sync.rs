@@ -34,9 +34,9 @@ fn regions(ws: &Workspace) -> Vec<Region> {
         region(
             "grader/checks/Cargo.toml",
             "features",
-            std::iter::once("default = [\"complete\"]\n".to_owned())
+            std::iter::once("default = [\"complete\", \"tools\"]\n".to_owned())
                 .chain(std::iter::once(format!(
-                    "# Every lecture built (the grader adds it then): the complete tracer, its tools and the final \
+                    "# Every lecture built (the grader adds it then): the complete tracer and the final \
                      images.\ncomplete = [{}]\n",
                     quoted(lectures.iter().map(feature))
                 )))

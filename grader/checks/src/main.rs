@@ -11,11 +11,12 @@
 //!   `raylab-checks serve --channel ADDR`, which makes the calls of the student's
 //!   code the judge asks for (`remote.rs`);
 //! - `render`, `bless` and `bench-rays` are the tools of `grader render`,
-//!   `grader bless` and `grader bench-rays`, present when every lecture is built.
+//!   `grader bless` and `grader bench-rays`, built with the feature `tools` (every
+//!   lecture; the grader asks for it for them, not to grade).
 
 // Built with some lectures only (those that compile), parts of the crate go unused:
 // that is expected and not worth a warning in the student's terminal.
-#![cfg_attr(not(feature = "complete"), allow(unused))]
+#![cfg_attr(not(feature = "tools"), allow(unused))]
 
 mod check;
 mod images;
@@ -30,7 +31,7 @@ mod scene_objects;
 mod scenes;
 mod settings;
 mod stages;
-#[cfg(feature = "complete")]
+#[cfg(feature = "tools")]
 mod tools;
 #[cfg(feature = "complete")]
 mod tracer;
@@ -90,21 +91,21 @@ enum Command {
         out: PathBuf,
     },
     /// Render a TOML or MIT 6.837 scene with the complete tracer.
-    #[cfg(feature = "complete")]
+    #[cfg(feature = "tools")]
     Render(tools::render::RenderArgs),
     /// Regenerate the lectures' snapshots (PNG and AOVs) from the reference.
-    #[cfg(feature = "complete")]
+    #[cfg(feature = "tools")]
     Bless {
         /// Only this lecture (e.g. 02).
         lecture: Option<String>,
     },
     /// Primary-ray throughput of lecture 09's BVH on a mesh (run with --release).
-    #[cfg(feature = "complete")]
+    #[cfg(feature = "tools")]
     BenchRays(tools::bench::BenchArgs),
     // INSTRUCTOR BEGIN
     /// Speed against accuracy, side by side: tables and plots under target/grader/tradeoffs (run with
     /// --release).
-    #[cfg(feature = "complete")]
+    #[cfg(feature = "tools")]
     Tradeoffs(tools::tradeoffs::TradeoffsArgs),
     // INSTRUCTOR END
 }
@@ -149,14 +150,14 @@ fn main() -> ExitCode {
                 None => Ok(no_verdict()),
             })
         }
-        #[cfg(feature = "complete")]
+        #[cfg(feature = "tools")]
         Command::Render(args) => tools::render::render(&args).map(|()| ExitCode::SUCCESS),
-        #[cfg(feature = "complete")]
+        #[cfg(feature = "tools")]
         Command::Bless { lecture } => images::bless(lecture.as_deref()).map(|()| ExitCode::SUCCESS),
-        #[cfg(feature = "complete")]
+        #[cfg(feature = "tools")]
         Command::BenchRays(args) => tools::bench::bench_rays(&args).map(|()| ExitCode::SUCCESS),
         // INSTRUCTOR BEGIN
-        #[cfg(feature = "complete")]
+        #[cfg(feature = "tools")]
         Command::Tradeoffs(args) => tools::tradeoffs::tradeoffs(&args).map(|()| ExitCode::SUCCESS),
         // INSTRUCTOR END
     };

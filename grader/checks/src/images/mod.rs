@@ -20,7 +20,7 @@
 //! picture against its snapshot, the report's images and 3D view), `diagnosis` (what a
 //! differing picture points to), `bless` (writing the snapshots, instructors').
 
-#[cfg(feature = "complete")]
+#[cfg(feature = "tools")]
 mod bless;
 mod diagnosis;
 mod geometry;
@@ -32,7 +32,7 @@ use crate::check::{CheckResult, Info, Kind, Meta};
 use crate::scenes::{SceneFile, scene_files};
 use crate::stages::{self, FINAL_STAGE};
 
-#[cfg(feature = "complete")]
+#[cfg(feature = "tools")]
 pub use bless::bless;
 use geometry::check_geometry;
 use picture::check_image;
