@@ -7,8 +7,9 @@ use std::ffi::OsString;
 use std::io::{BufRead, BufReader, Read, Write};
 use std::net::TcpStream;
 use std::path::{Path, PathBuf};
-use std::process::{Command, ExitStatus, Stdio};
+use std::process::{Child, Command, ExitStatus, Stdio};
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
+use std::sync::mpsc::{self, Receiver, RecvTimeoutError};
 use std::sync::{Arc, Mutex};
 use std::thread;
 use std::time::{Duration, Instant};
@@ -103,12 +104,14 @@ pub fn run_judged(
         return Err(format!("the judge of {id} did not start: {}", stderr.trim()));
     };
     let judge_err = judging.stderr.take();
+    let (judge_closed, judge_streams_closed) = mpsc::channel();
     let judge_streams = thread::spawn(move || {
         let (mut out, mut err) = (String::new(), String::new());
         let _ = judge_out.read_to_string(&mut out);
         if let Some(mut e) = judge_err {
             let _ = e.read_to_string(&mut err);
         }
+        let _ = judge_closed.send(());
         (out, err)
     });
     // A hidden check runs in the judge alone; its subject makes the calls the judge asks for.
@@ -129,14 +132,8 @@ pub fn run_judged(
         let _ = stream.write_all(&raylab_protocol::no_subject(token));
     }
     let deadline = Instant::now() + JUDGE_GRACE;
-    let judged = loop {
-        match judging.try_wait() {
-            Ok(Some(status)) => break Some(status),
-            Ok(None) if Instant::now() >= deadline => break None,
-            Ok(None) => thread::sleep(Duration::from_millis(5)),
-            Err(e) => return Err(format!("waiting for the judge of {id}: {e}")),
-        }
-    };
+    let (judged, _) = wait_for(&mut judging, deadline, &judge_streams_closed, &|| false)
+        .map_err(|e| format!("waiting for the judge of {id}: {e}"))?;
     if judged.is_none() {
         let _ = judging.kill();
         let _ = judging.wait();
@@ -217,31 +214,26 @@ fn run_process(
     }
     let printed = Arc::new(AtomicU64::new(0));
     let flood = Arc::new(AtomicBool::new(false));
+    // Each drain says when its stream has closed and all it kept is in.
+    let (closed, streams_closed) = mpsc::channel();
     let drain = |stream: Option<Box<dyn Read + Send>>| {
-        let (printed, flood) = (printed.clone(), flood.clone());
+        let (printed, flood, closed) = (printed.clone(), flood.clone(), closed.clone());
         let kept = Arc::new(Mutex::new(Vec::new()));
         let into = kept.clone();
-        (thread::spawn(move || drain_stream(stream, &into, &printed, &flood)), kept)
+        thread::spawn(move || {
+            drain_stream(stream, &into, &printed, &flood);
+            let _ = closed.send(());
+        });
+        kept
     };
     let stdout = drain(child.stdout.take().map(|s| Box::new(s) as Box<dyn Read + Send>));
     let stderr = drain(child.stderr.take().map(|s| Box::new(s) as Box<dyn Read + Send>));
+    drop(closed);
     let deadline = start + timeout;
-    let (mut status, mut timed_out) = (None, false);
-    loop {
-        match child.try_wait() {
-            Ok(Some(s)) => {
-                status = Some(s);
-                break;
-            }
-            Ok(None) if flood.load(Ordering::Relaxed) => break,
-            Ok(None) if Instant::now() >= deadline => {
-                timed_out = true;
-                break;
-            }
-            Ok(None) => thread::sleep(Duration::from_millis(5)),
-            Err(e) => return Err(format!("waiting for {id}: {e}")),
-        }
-    }
+    let (status, mut drained) =
+        wait_for(&mut child, deadline, &streams_closed, &|| flood.load(Ordering::Relaxed))
+            .map_err(|e| format!("waiting for {id}: {e}"))?;
+    let timed_out = status.is_none() && !flood.load(Ordering::Relaxed);
     if status.is_none() {
         let _ = child.kill();
         let _ = child.wait();
@@ -254,9 +246,12 @@ fn run_process(
         crate::platform::sweep(user, &live);
     }
     // And a process that left the group and kept the pipes is not waited for.
-    let drained = Instant::now() + DRAIN_GRACE;
-    while !(stdout.0.is_finished() && stderr.0.is_finished()) && Instant::now() < drained {
-        thread::sleep(Duration::from_millis(5));
+    let grace = Instant::now() + DRAIN_GRACE;
+    while drained < 2 {
+        match streams_closed.recv_timeout(grace.saturating_duration_since(Instant::now())) {
+            Ok(()) => drained += 1,
+            Err(_) => break,
+        }
     }
     let text = |kept: &Arc<Mutex<Vec<u8>>>| {
         String::from_utf8_lossy(&kept.lock().map(|k| k.clone()).unwrap_or_default()).into_owned()
@@ -266,8 +261,8 @@ fn run_process(
         timed_out,
         too_much_output: flood.load(Ordering::Relaxed),
         verdict: None,
-        stdout: text(&stdout.1),
-        stderr: text(&stderr.1),
+        stdout: text(&stdout),
+        stderr: text(&stderr),
         seconds: start.elapsed().as_secs_f64(),
     })
 }
@@ -275,6 +270,43 @@ fn run_process(
 /// How long the grader waits for a check's output pipes to close once the
 /// check has ended and its process group is gone.
 const DRAIN_GRACE: Duration = Duration::from_secs(2);
+
+/// How often a running process is looked at while nothing else wakes the wait.
+const POLL: Duration = Duration::from_millis(5);
+
+/// Waits for `child` to end, until `deadline` or until `stop` says so: its status, or `None`, and
+/// how many of its streams said they closed (`closed`: a message each). A process's end closes its
+/// streams, so the wait wakes when one closes and looks again at once (then every 0.1 ms, doubling
+/// up to [`POLL`], while the process is being reaped); otherwise it looks every [`POLL`]. Sleeping
+/// 5 ms between looks cost every check 2.5 ms on average, and lecture 10's 90 processes 0.15 s.
+fn wait_for(
+    child: &mut Child,
+    deadline: Instant,
+    closed: &Receiver<()>,
+    stop: &dyn Fn() -> bool,
+) -> std::io::Result<(Option<ExitStatus>, usize)> {
+    let (mut streams_closed, mut pause) = (0, POLL);
+    loop {
+        if let Some(status) = child.try_wait()? {
+            return Ok((Some(status), streams_closed));
+        }
+        let now = Instant::now();
+        if stop() || now >= deadline {
+            return Ok((None, streams_closed));
+        }
+        match closed.recv_timeout(pause.min(deadline - now)) {
+            Ok(()) => {
+                streams_closed += 1;
+                pause = Duration::from_micros(100);
+            }
+            Err(RecvTimeoutError::Timeout) => pause = (pause * 2).min(POLL),
+            Err(RecvTimeoutError::Disconnected) => {
+                thread::sleep(pause.min(deadline - now));
+                pause = (pause * 2).min(POLL);
+            }
+        }
+    }
+}
 
 /// Reads a stream to its end, keeping its first [`KEPT_OUTPUT`] bytes in `kept`
 /// and raising `flood` once all streams together passed [`MAX_OUTPUT`].
