@@ -188,20 +188,58 @@ pub fn grade(ws: &Workspace, options: &GradeOptions) -> Result<Grade, String> {
     let scratch = scratch_dir(&out)?;
     // Verdicts that need no run, and the checks to run.
     let mut verdicts: Vec<Option<Verdict>> = Vec::with_capacity(infos.len());
-    let mut to_run = Vec::new();
+    let (mut to_run, mut unseen) = (Vec::new(), Vec::new());
     for (index, info) in infos.iter().enumerate() {
         match not_runnable(info, &built) {
             Some(verdict) => verdicts.push(Some(verdict)),
             None => {
                 verdicts.push(None);
-                to_run.push(index);
+                if index < shown { to_run.push(index) } else { unseen.push(index) }
             }
         }
     }
+    let results = Mutex::new(verdicts);
+    let run = |to_run: Vec<usize>| {
+        run_checks(&infos, to_run, &results, (&built.binary, &out, &scratch), ws, options)
+    };
+    run(to_run);
+    // The unseen checks change only the verdict of a check that failed (`apply_needs`): they run
+    // when one did, those of the exercises it needs. Everything passing, they cost nothing.
+    let failed_needs: BTreeSet<String> = results
+        .lock()
+        .map_err(|_| "a grading thread panicked")?
+        .iter()
+        .flatten()
+        .filter(|v| matches!(v.status, Status::Failed | Status::Crashed | Status::TimedOut))
+        .flat_map(|v| v.info.needs.iter().cloned())
+        .collect();
+    unseen.retain(|&index| failed_needs.contains(&infos[index].exercise_id()));
+    run(unseen);
+    let mut verdicts: Vec<Verdict> =
+        results.into_inner().map_err(|_| "a grading thread panicked")?.into_iter().flatten().collect();
+    apply_needs(&mut verdicts);
+    verdicts.truncate(shown);
+    course_order(ws, &mut verdicts);
+    Ok(Grade {
+        verdicts,
+        compile_errors: built.failed.into_iter().collect(),
+        seconds: start.elapsed().as_secs_f64(),
+    })
+}
+
+/// Runs the checks `to_run` (indices into `infos`), as many at once as `options.jobs` (one a
+/// grading user), each verdict into its place in `results`.
+fn run_checks(
+    infos: &[Info],
+    mut to_run: Vec<usize>,
+    results: &Mutex<Vec<Option<Verdict>>>,
+    (binary, out, scratch): (&Path, &Path, &Path),
+    ws: &Workspace,
+    options: &GradeOptions,
+) {
     // The pictures first: they take the longest (a mesh drawn by brute force, 64 shadow rays a
     // pixel), and started last they would run on alone after the short checks, one core idle.
     to_run.sort_by_key(|&index| infos[index].kind != Kind::Image);
-    let results = Mutex::new(verdicts);
     let queue = Mutex::new(to_run.into_iter());
     // As other users, a job per user: a check's processes count against its user's limit only.
     let jobs = match options.run_as.len() {
@@ -211,8 +249,7 @@ pub fn grade(ws: &Workspace, options: &GradeOptions) -> Result<Grade, String> {
     let lecture_of = |file: &str| ws.lecture_of_path(file);
     std::thread::scope(|scope| {
         for job in 0..jobs {
-            let (results, queue, infos, lecture_of) = (&results, &queue, &infos, &lecture_of);
-            let (binary, out, scratch) = (&built.binary, &out, &scratch);
+            let (queue, lecture_of) = (&queue, &lecture_of);
             let user = options.run_as.get(job);
             scope.spawn(move || {
                 while let Some(index) = queue.lock().map(|mut q| q.next()).unwrap_or(None) {
@@ -234,16 +271,6 @@ pub fn grade(ws: &Workspace, options: &GradeOptions) -> Result<Grade, String> {
             });
         }
     });
-    let mut verdicts: Vec<Verdict> =
-        results.into_inner().map_err(|_| "a grading thread panicked")?.into_iter().flatten().collect();
-    apply_needs(&mut verdicts);
-    verdicts.truncate(shown);
-    course_order(ws, &mut verdicts);
-    Ok(Grade {
-        verdicts,
-        compile_errors: built.failed.into_iter().collect(),
-        seconds: start.elapsed().as_secs_f64(),
-    })
 }
 
 /// Sorts `verdicts` in the course's order: lecture by lecture, each lecture's exercises in the
