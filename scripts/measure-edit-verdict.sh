@@ -5,7 +5,8 @@
 # (rerun: cargo's no-op and the checks' run). Prints per lecture the medians of total and rerun,
 # and their difference (rebuild: the lecture, the checks crate and the link).
 #
-#   scripts/measure-edit-verdict.sh             the table (~3 minutes on 2 cores)
+#   scripts/measure-edit-verdict.sh             the table (~2 minutes on 2 cores)
+#   ROUNDS=5 scripts/measure-edit-verdict.sh    medians of 5 rounds (the machine's noise is ±0.1 s)
 #   scripts/measure-edit-verdict.sh --debuginfo the relink after an edit and a cold build of the
 #                                               checks, with the workspace's debug info against
 #                                               full debug info everywhere (~3 minutes)
@@ -46,7 +47,7 @@ fi
 
 raw=$(mktemp)
 cargo run -q -p grader > /dev/null 2>&1 || true
-for i in 1 2 3; do
+for i in $(seq 1 "${ROUNDS:-3}"); do
   for d in lectures/[0-9][0-9]-*/; do
     n=$(basename "$d" | cut -c1-2)
     f=$d/src/lib.rs
@@ -68,7 +69,7 @@ rows = collections.defaultdict(list)
 for line in open(sys.argv[1]):
     n, total, rerun = line.split()
     rows[n].append((float(total), float(rerun)))
-print("lecture  total  rerun  rebuild   (seconds, median of 3)")
+print(f"lecture  total  rerun  rebuild   (seconds, median of {len(next(iter(rows.values())))})")
 for n in sorted(rows):
     total = statistics.median(t for t, _ in rows[n])
     rerun = statistics.median(r for _, r in rows[n])
