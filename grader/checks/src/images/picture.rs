@@ -36,17 +36,13 @@ fn compare_with_snapshot(
     dir: &Path,
 ) -> Result<Compared, Failure> {
     let case = format!("{}/{}", file.folder, file.name());
-    let snapshot = stage_snapshot(file, stage);
-    let png = std::fs::read(&snapshot)
-        .map_err(|e| ImageError::Io { path: snapshot.clone(), message: e.to_string() })
-        .and_then(|png| Ok((Srgb8::decode_png(&png, &snapshot)?, png)));
-    let (expected_srgb8, png) = png.map_err(|e| fail(&case, "a snapshot", no_snapshot(file, e), ""))?;
-    let expected = expected_srgb8.to_linear();
+    let snapshot = Snapshot::read(&stage_snapshot(file, stage))
+        .map_err(|e| fail(&case, "a snapshot", no_snapshot(file, e), ""))?;
+    let expected = snapshot.srgb8.to_linear();
     let comparison = compare(&expected, yours, CHANNEL_THRESHOLD).map_err(|e| {
         fail(&case, format!("{}×{}", expected.width, expected.height), e, "one pixel per (x, y), row by row")
     })?;
-    let images = write_images(dir, (&png, &expected_srgb8), yours)
-        .map_err(|e| fail(&case, "images written", e, ""))?;
+    let images = write_images(dir, &snapshot, yours).map_err(|e| fail(&case, "images written", e, ""))?;
     let measured = format!(
         "{:.3} % of pixels differ by more than {CHANNEL_THRESHOLD} steps (allowed {:.2} %); mean FLIP {:.4}",
         100.0 * comparison.fraction_over(),
@@ -238,11 +234,26 @@ pub fn flip_error(expected: &Srgb8, yours: &Srgb8) -> nv_flip::FlipImageFloat {
     )
 }
 
-/// Writes expected.png (the snapshot's file, whose values `expected` holds), yours.png (a
-/// NaN pixel magenta) and diff.png (FLIP's error map, magma colours) into `dir`, and measures the
-/// FLIP error. Each picture is turned into 8-bit values once, for FLIP and its file alike.
-pub fn write_images(dir: &Path, expected: (&[u8], &Srgb8), yours: &Image) -> Result<Images, String> {
-    let (png, expected) = expected;
+/// A snapshot as its file holds it (the report's expected.png) and as its values.
+pub struct Snapshot {
+    png: Vec<u8>,
+    srgb8: Srgb8,
+}
+
+impl Snapshot {
+    /// Reads and decodes the PNG at `path`, once.
+    pub fn read(path: &Path) -> Result<Snapshot, ImageError> {
+        let png = std::fs::read(path)
+            .map_err(|e| ImageError::Io { path: path.to_owned(), message: e.to_string() })?;
+        Ok(Snapshot { srgb8: Srgb8::decode_png(&png, path)?, png })
+    }
+}
+
+/// Writes expected.png (the snapshot's file), yours.png (a NaN pixel magenta) and diff.png (FLIP's
+/// error map, magma colours) into `dir`, and measures the FLIP error. Each picture is turned into
+/// 8-bit values once, for FLIP and its file alike.
+pub fn write_images(dir: &Path, snapshot: &Snapshot, yours: &Image) -> Result<Images, String> {
+    let expected = &snapshot.srgb8;
     std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
     let yours = shown(yours);
     let error = flip_error(expected, &yours);
@@ -261,7 +272,7 @@ pub fn write_images(dir: &Path, expected: (&[u8], &Srgb8), yours: &Image) -> Res
         Ok(path.to_string_lossy().into_owned())
     };
     let expected_png = dir.join("expected.png");
-    std::fs::write(&expected_png, png).map_err(|e| format!("{}: {e}", expected_png.display()))?;
+    std::fs::write(&expected_png, &snapshot.png).map_err(|e| format!("{}: {e}", expected_png.display()))?;
     Ok(Images {
         expected: expected_png.to_string_lossy().into_owned(),
         yours: save(&yours, "yours.png")?,
