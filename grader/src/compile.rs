@@ -48,7 +48,8 @@ pub struct Built {
 pub struct BuildOptions {
     /// The lectures wanted (their prerequisites come in by themselves).
     pub lectures: BTreeSet<String>,
-    /// The tools on the complete tracer (`render`, `bless`…), with every lecture: not to grade.
+    /// The tools on the complete tracer (`render`, `bless`…), with every lecture: for the tools
+    /// and a submission's build, not for a local grade.
     pub tools: bool,
     pub hidden: bool,
     pub release: bool,

@@ -138,7 +138,10 @@ pub fn grade(ws: &Workspace, options: &GradeOptions) -> Result<Grade, String> {
             ws,
             &BuildOptions {
                 lectures: wanted.clone(),
-                tools: false,
+                // A student's local grade, rebuilt after every edit, links no tools. A submission is
+                // built once, where they cost nothing measurable, and its binary is then the whole
+                // of its week: the course's week test renders each week's scenes with it.
+                tools: submission,
                 // Graded with a judge, the hidden checks are the judge's alone: the student's build
                 // has neither their code nor their answers (`raylab-checks/src/remote.rs`).
                 hidden: options.hidden && !submission,
