@@ -235,9 +235,10 @@ pub(super) fn triangle_no_leaks(method: TriangleFn) -> CheckResult {
             total += 1;
             // First the triangles around the vertex nearest the aimed point (that vertex itself,
             // or for a point of an edge usually one of its ends, whose triangles hold the edge),
-            // then the others: a watertight test hits one of the first at once, where asking all 320 of an icosphere in turn took 0.77 s of a judged grade
-            // (each answer crosses to the judge). A leak still asks every triangle: what is proved
-            // is the same, that some triangle is hit.
+            // then the others: a watertight test hits one of the first at once, where asking all
+            // 320 of an icosphere in turn took 0.77 s of a judged grade (each answer crosses to
+            // the judge). A leak still asks every triangle: what is proved is the same, that some
+            // triangle is hit.
             let target = r.origin + r.dir;
             let nearest = (0..mesh.positions.len())
                 .min_by(|&i, &j| {
@@ -246,8 +247,9 @@ pub(super) fn triangle_no_leaks(method: TriangleFn) -> CheckResult {
                 })
                 .unwrap_or(0);
             let first = around.get(nearest).map(Vec::as_slice).unwrap_or_default();
-            let order = first.iter().copied().chain((0..mesh.triangles.len()).filter(|t| !first.contains(t)));
-            let hit = order.into_iter().any(|i| {
+            let mut order =
+                first.iter().copied().chain((0..mesh.triangles.len()).filter(|t| !first.contains(t)));
+            let hit = order.any(|i| {
                 let [a, b, c] = mesh.triangle(i);
                 method(r, a, b, c, ALL).is_some()
             });
