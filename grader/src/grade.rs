@@ -148,6 +148,7 @@ pub fn grade(ws: &Workspace, options: &GradeOptions) -> Result<Grade, String> {
                 release: options.release,
                 f64: options.f64,
                 target_dir: options.target_dir.clone(),
+                build_dir: None,
                 show_progress: options.show_progress,
                 run_as: options.run_as.first().cloned(),
                 submission,

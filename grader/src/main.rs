@@ -350,6 +350,7 @@ fn forward(tool: &str, args: &[String]) -> Result<bool, String> {
                     release: options.release,
                     f64: options.f64,
                     target_dir: None,
+                    build_dir: None,
                     show_progress: true,
                     run_as: None,
                     submission: false,

@@ -192,6 +192,7 @@ pub fn judge(root: &Path, options: &crate::grade::GradeOptions) -> Result<PathBu
             release: options.release,
             f64: options.f64,
             target_dir: Some(tree.join("target")),
+            build_dir: build_dir(&root),
             show_progress: options.show_progress,
             run_as: None,
             submission: false,
@@ -201,6 +202,25 @@ pub fn judge(root: &Path, options: &crate::grade::GradeOptions) -> Result<PathBu
         return Err(format!("the judge does not compile (lecture {lecture}): {error:?}"));
     }
     Ok(built.binary)
+}
+
+/// Where cargo builds the instructor's workspace on the way (its `build-dir`, the target folder
+/// unless configured), as cargo reports it; `None` if it does not say. The judge builds there too:
+/// the registry crates, the larger half of a cold build, are then built once for the instructor's
+/// checks and the judge (the same crates with the same features and profile), while the judge's
+/// own crates, at other paths, are other units of their own, and its binary still goes to its own
+/// target folder. Nothing of a student's is ever built there: their work folder has its own.
+fn build_dir(root: &Path) -> Option<PathBuf> {
+    let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
+    let output = std::process::Command::new(cargo)
+        .args(["metadata", "--no-deps", "--format-version", "1", "--manifest-path"])
+        .arg(root.join("Cargo.toml"))
+        .stdin(std::process::Stdio::null())
+        .stderr(std::process::Stdio::null())
+        .output()
+        .ok()?;
+    let metadata: serde_json::Value = serde_json::from_slice(&output.stdout).ok()?;
+    metadata["build_directory"].as_str().map(PathBuf::from)
 }
 
 // INSTRUCTOR BEGIN

@@ -45,12 +45,15 @@ pub fn cargo(dir: &Path, args: &[&str], target: Option<&Path>) -> (String, Strin
     )
 }
 
-/// The instructor's grader, built once with the tests' precision.
+/// The instructor's grader, built once with the tests' precision: as `cargo build --workspace`
+/// builds it (`--workspace --bin grader`, the registry crates with the workspace's features), which
+/// the README's test command has just done; `-p grader` alone resolved them otherwise and built
+/// serde, nix and the grader again.
 pub fn grader_binary() -> &'static Path {
     static BINARY: OnceLock<PathBuf> = OnceLock::new();
     BINARY.get_or_init(|| {
-        let (stdout, stderr, ok) =
-            cargo(&root(), &["build", "-q", "-p", "grader", "--message-format", "json"], None);
+        let args = ["build", "-q", "--workspace", "--bin", "grader", "--message-format", "json"];
+        let (stdout, stderr, ok) = cargo(&root(), &args, None);
         assert!(ok, "the grader does not build:\n{stderr}");
         stdout
             .lines()
