@@ -177,7 +177,14 @@ pub fn judge(root: &Path, options: &crate::grade::GradeOptions) -> Result<PathBu
         .map_err(|e| format!("{}: {e}", lock_path.display()))?;
     let lock = std::fs::File::create(&lock_path).map_err(|e| format!("{}: {e}", lock_path.display()))?;
     lock.lock().map_err(|e| format!("{}: {e}", lock_path.display()))?;
-    mirror(&root, &tree, &|relative| !under(relative, NOT_COPIED) && !is_lecture_source(relative))?;
+    let keep = |relative: &str| !under(relative, NOT_COPIED) && !is_lecture_source(relative);
+    mirror_as(&root, &tree, &keep, &|relative, bytes| {
+        if relative.ends_with("Cargo.toml") && relative != "Cargo.toml" {
+            judges_version(relative, bytes)
+        } else {
+            Ok(bytes)
+        }
+    })?;
     let ws = Workspace::open(&root)?;
     for lecture in &ws.lectures {
         stub_lecture(&root, lecture, &tree.join("lectures").join(&lecture.folder).join("src"))?;
@@ -202,6 +209,46 @@ pub fn judge(root: &Path, options: &crate::grade::GradeOptions) -> Result<PathBu
         return Err(format!("the judge does not compile (lecture {lecture}): {error:?}"));
     }
     Ok(built.binary)
+}
+
+/// A package's manifest in the judge's tree, its version marked as the judge's (`0.1.0` →
+/// `0.1.0-judge`). The judge builds in the instructor's build-dir ([`build_dir`]), and cargo names
+/// a path package's files by its name, version and path *within its workspace*, the same in both
+/// trees: without the mark, the judge's stubbed crates would be written over the instructor's (and
+/// the instructor's grade once ran the judge's stubs). With it, every crate of the judge's tree is
+/// a file of its own, and only the registry crates are shared.
+fn judges_version(relative: &str, bytes: Vec<u8>) -> Result<Vec<u8>, String> {
+    let text = String::from_utf8(bytes).map_err(|e| format!("{relative}: {e}"))?;
+    let mut section = "";
+    let mut marked = false;
+    let mut lines: Vec<String> = Vec::new();
+    for line in text.lines() {
+        let trimmed = line.trim();
+        if trimmed.starts_with('[') {
+            section = trimmed;
+        }
+        let version = trimmed.strip_prefix("version").map(str::trim_start);
+        match (section, version.and_then(|v| v.strip_prefix('='))) {
+            ("[package]", Some(value)) if !marked => {
+                let value = value.trim();
+                let Some(number) = value.strip_prefix('"').and_then(|v| v.strip_suffix('"')) else {
+                    return Err(format!(
+                        "{relative}: the package's version is not a literal (`version = \"0.1.0\"`), \
+                         which the judge's build marks as its own"
+                    ));
+                };
+                lines.push(format!("version = \"{number}-judge\""));
+                marked = true;
+            }
+            _ => lines.push(line.to_owned()),
+        }
+    }
+    if text.contains("[package]") && !marked {
+        return Err(format!(
+            "{relative}: the package has no `version = \"…\"` line, which the judge's build marks as its own"
+        ));
+    }
+    Ok((lines.join("\n") + "\n").into_bytes())
 }
 
 /// Where cargo builds the instructor's workspace on the way (its `build-dir`, the target folder
@@ -494,6 +541,26 @@ mod tests {
         let _ = std::fs::remove_dir_all(&dir);
         std::fs::create_dir_all(&dir).unwrap();
         dir
+    }
+
+    #[test]
+    fn the_judges_packages_are_versions_of_their_own() {
+        let manifest = "[package]\nname = \"l01-x\"\nversion = \"0.1.0\"\n\n[dependencies]\n\
+                        serde = { version = \"1\" }\n\n[dependencies.glam]\nversion = \"0.34\"\n";
+        let marked = String::from_utf8(judges_version("l/Cargo.toml", manifest.into()).unwrap()).unwrap();
+        assert_eq!(marked, manifest.replacen("0.1.0", "0.1.0-judge", 1));
+        // A version the judge cannot mark stops the judge's build rather than sharing files.
+        for unmarkable in ["[package]\nname = \"x\"\nversion.workspace = true\n", "[package]\nname = \"x\"\n"]
+        {
+            let said = judges_version("x/Cargo.toml", unmarkable.into()).unwrap_err();
+            assert!(said.starts_with("x/Cargo.toml: ") && said.contains("version"), "{said}");
+        }
+        // A manifest without a package (a virtual workspace's) is left as it is.
+        let virtual_manifest = "[workspace]\nmembers = [\"a\"]\n";
+        assert_eq!(
+            judges_version("v/Cargo.toml", virtual_manifest.into()).unwrap(),
+            virtual_manifest.as_bytes()
+        );
     }
 
     #[test]

@@ -366,6 +366,17 @@ fn chaos_ends_in_the_right_verdicts() {
     // stage-10 scene (10/image/checker-aliasing-16spp) has its 3D view.
     let report = scratch().join("work/target/grader/report.html");
     browser_check("tests/report_check.py", &[report.to_str().unwrap(), "--expect-view"]);
+    // The judge, built just now in the instructor's build-dir, left the instructor's crates alone:
+    // the reference's lecture 01, built after it, is the reference's, not the judge's stubs (with
+    // the judge's packages at the instructor's versions, cargo found the judge's stubbed lecture
+    // fresh and the reference's grade said "not started").
+    let (grade, stderr) = grader(&["--strict", "01"], &scratch().join("after-the-judge.json"));
+    let failing: Vec<String> = checks(&grade)
+        .iter()
+        .filter(|c| c["status"] != "passed")
+        .map(|c| format!("{} {}: {}", c["info"]["id"], c["status"], c["summary"]))
+        .collect();
+    assert!(failing.is_empty(), "after the judge's build:\n{}\n{stderr}", failing.join("\n"));
 }
 
 #[test]
