@@ -70,7 +70,7 @@ pub struct GradeOptions {
     /// A judge (the checks built with every exercise stubbed, `submission::judge`): every check
     /// runs in two processes, the verdict the judge's (`run_judged`), and the list of checks is
     /// the judge's.
-    pub judge: Option<PathBuf>,
+    pub judge: Option<crate::submission::Judge>,
     /// The users the student's code is built and run as (`grade --run-as`): the first builds, and
     /// each runs one job's checks (at most as many jobs as users); the judge runs as this
     /// process's.
@@ -167,7 +167,7 @@ pub fn grade(ws: &Workspace, options: &GradeOptions) -> Result<Grade, String> {
         // Which checks exist, their points, needs, limits and hidden flags are the judge's word (a
         // build of the instructor's tree); the student's build says only, through cargo, which
         // lectures compiled. Its binary is never asked for a list.
-        Some(judge) => from_judge(judge, &built)?,
+        Some(judge) => from_judge(judge.binary()?, &built)?,
         None => list(&built.binary)?,
     };
     let mut infos: Vec<Info> = all
@@ -260,8 +260,9 @@ fn run_checks(
                     let info = infos[index].clone();
                     let timeout = Duration::from_secs(info.timeout_s.into());
                     // A submission's every check is judged: nothing its process writes is a verdict.
-                    let ran = match &options.judge {
-                        Some(judge) => run_judged(binary, judge, &info, out, timeout, user),
+                    let ran = match options.judge.as_ref().map(crate::submission::Judge::binary) {
+                        Some(Ok(judge)) => run_judged(binary, judge, &info, out, timeout, user),
+                        Some(Err(e)) => Err(e),
                         None => run_check(binary, &info.id, scratch, out, timeout),
                     };
                     let verdict = match ran {

@@ -202,8 +202,14 @@ fn main() -> ExitCode {
                 let root = workspace::own_root();
                 let (ws, target) =
                     submission::prepare(&root, &submission, workdir.as_deref(), run_as.first())?;
-                let judge = submission::judge(&root, &options())?;
-                grade_command(&Ok(ws), &grade, Some(Submission { target, judge, run_as }))
+                // Built beside the submission's build; waited for when its list is read.
+                let judge = submission::Judge::building(&root, &options());
+                let graded =
+                    grade_command(&Ok(ws), &grade, Some(Submission { target, judge: judge.clone(), run_as }));
+                // Whatever the grade came to, the judge's build ends before this process does (its
+                // tree and lock are left whole for the next grade).
+                let _ = judge.binary();
+                graded
             })
         }
         Some(Cmd::Gradescope { dir, force }) => {
@@ -251,8 +257,8 @@ fn options() -> GradeOptions {
 struct Submission {
     /// The work folder's target folder.
     target: PathBuf,
-    /// The judge binary (`submission::judge`).
-    judge: PathBuf,
+    /// The judge (`submission::judge`), maybe still building.
+    judge: submission::Judge,
     /// The users the student's code runs as (`--run-as`), one per job.
     run_as: Vec<platform::RunAs>,
 }

@@ -11,6 +11,8 @@
 
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
+use std::sync::{Arc, Mutex, OnceLock};
+use std::thread::JoinHandle;
 
 use crate::handout::stub_solutions;
 use crate::workspace::Workspace;
@@ -150,6 +152,55 @@ fn stub_lecture(root: &Path, lecture: &crate::workspace::Lecture, target: &Path)
         let (stubbed, _) = stub_solutions(&text, &lecture.number, relative)?;
         Ok(stubbed.into_bytes())
     })
+}
+
+/// The judge of a grade: its binary, or its build still running on a thread of its own beside the
+/// submission's ([`Judge::building`]). The two cold builds overlap: the judge's is mostly the
+/// chain kit → lectures → checks, one crate at a time, which leaves a core free that the
+/// submission's build takes.
+#[derive(Clone)]
+pub struct Judge {
+    building: Arc<Mutex<Option<JoinHandle<JudgeBuilt>>>>,
+    binary: Arc<OnceLock<JudgeBuilt>>,
+}
+
+/// What [`judge`] returns: the judge's binary, or why there is none.
+type JudgeBuilt = Result<PathBuf, String>;
+
+impl Judge {
+    /// A judge already built (`judge`).
+    pub fn built(binary: PathBuf) -> Judge {
+        Judge { building: Arc::default(), binary: Arc::new(OnceLock::from(Ok(binary))) }
+    }
+
+    /// [`judge`] for `root`, built on a thread from now on.
+    pub fn building(root: &Path, options: &crate::grade::GradeOptions) -> Judge {
+        let (root, options) = (root.to_owned(), options.clone());
+        let handle = std::thread::spawn(move || judge(&root, &options));
+        Judge { building: Arc::new(Mutex::new(Some(handle))), binary: Arc::default() }
+    }
+
+    /// The judge's binary, once built (waits for its build), or why there is none.
+    pub fn binary(&self) -> Result<&Path, String> {
+        let built = self.binary.get_or_init(|| {
+            let handle = self.building.lock().unwrap_or_else(|e| e.into_inner()).take();
+            match handle.map(JoinHandle::join) {
+                Some(Ok(built)) => built,
+                Some(Err(_)) => Err("the judge's build panicked".to_owned()),
+                None => Err("the judge's build was waited for twice".to_owned()),
+            }
+        });
+        built.as_deref().map_err(Clone::clone)
+    }
+}
+
+impl std::fmt::Debug for Judge {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self.binary.get() {
+            Some(built) => f.debug_tuple("Judge").field(built).finish(),
+            None => f.write_str("Judge(building)"),
+        }
+    }
 }
 
 /// The judge of submissions: the instructor's workspace with every exercise

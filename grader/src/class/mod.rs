@@ -407,7 +407,7 @@ impl Class<'_> {
             grading.only_prerequisites = true;
             grading.hidden = true;
             grading.target_dir = Some(target);
-            grading.judge = Some(judge.to_owned());
+            grading.judge = Some(crate::submission::Judge::built(judge.to_owned()));
             grading.run_as = users.to_vec();
             grading.out_dir = Some(ws.root.join("target").join("grader"));
             grading.show_progress = false;
