@@ -306,8 +306,9 @@ fn judges_version(relative: &str, bytes: Vec<u8>) -> Result<Vec<u8>, String> {
 /// unless configured), as cargo reports it; `None` if it does not say. The judge builds there too:
 /// the registry crates, the larger half of a cold build, are then built once for the instructor's
 /// checks and the judge (the same crates with the same features and profile), while the judge's
-/// own crates, at other paths, are other units of their own, and its binary still goes to its own
-/// target folder. Nothing of a student's is ever built there: their work folder has its own.
+/// own crates, versioned as the judge's ([`judges_version`]), are files of their own, and its
+/// binary still goes to its own target folder. Nothing of a student's is ever built there: their
+/// work folder has its own.
 fn build_dir(root: &Path) -> Option<PathBuf> {
     let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
     let output = std::process::Command::new(cargo)
