@@ -168,11 +168,13 @@ pub struct Judge {
 type JudgeBuilt = Result<PathBuf, String>;
 
 impl Judge {
-    /// A judge already built (`judge`).
+    // INSTRUCTOR BEGIN
+    /// A judge already built (`judge`): `grader class` builds its one judge first.
     pub fn built(binary: PathBuf) -> Judge {
         Judge { building: Arc::default(), binary: Arc::new(OnceLock::from(Ok(binary))) }
     }
 
+    // INSTRUCTOR END
     /// [`judge`] for `root`, built on a thread from now on.
     pub fn building(root: &Path, options: &crate::grade::GradeOptions) -> Judge {
         let (root, options) = (root.to_owned(), options.clone());
