@@ -234,6 +234,8 @@ pub fn judge(root: &Path, options: &crate::grade::GradeOptions) -> Result<PathBu
     mirror_as(&root, &tree, &keep, &|relative, bytes| {
         if relative.ends_with("Cargo.toml") && relative != "Cargo.toml" {
             judges_version(relative, bytes)
+        } else if relative == "Cargo.lock" {
+            judges_lock(bytes)
         } else {
             Ok(bytes)
         }
@@ -302,6 +304,25 @@ fn judges_version(relative: &str, bytes: Vec<u8>) -> Result<Vec<u8>, String> {
         ));
     }
     Ok((lines.join("\n") + "\n").into_bytes())
+}
+
+/// The workspace's `Cargo.lock` in the judge's tree: each path package (the `[[package]]` entries
+/// without a `source`, the workspace's members) at its version marked as [`judges_version`] marks
+/// it. The lock then still holds for the judge's tree, and cargo resolves nothing again (offline,
+/// as a grading machine may be, it could not: a registry crate it had not fetched stopped the build).
+fn judges_lock(bytes: Vec<u8>) -> Result<Vec<u8>, String> {
+    let text = String::from_utf8(bytes).map_err(|e| format!("Cargo.lock: {e}"))?;
+    let mut out = String::with_capacity(text.len() + 1024);
+    for entry in text.split_inclusive("[[package]]") {
+        let is_path_package = !entry.lines().any(|l| l.starts_with("source = "));
+        for line in entry.split_inclusive('\n') {
+            match line.strip_prefix("version = \"").and_then(|v| v.strip_suffix("\"\n")) {
+                Some(number) if is_path_package => out.push_str(&format!("version = \"{number}-judge\"\n")),
+                _ => out.push_str(line),
+            }
+        }
+    }
+    Ok(out.into_bytes())
 }
 
 /// Where cargo builds the instructor's workspace on the way (its `build-dir`, the target folder
@@ -609,6 +630,11 @@ mod tests {
             let said = judges_version("x/Cargo.toml", unmarkable.into()).unwrap_err();
             assert!(said.starts_with("x/Cargo.toml: ") && said.contains("version"), "{said}");
         }
+        // The lock marks the same packages (those without a source), and only them.
+        let lock = "version = 4\n\n[[package]]\nname = \"l01-x\"\nversion = \"0.1.0\"\ndependencies = [\n \"serde\",\n]\n\n\
+                    [[package]]\nname = \"serde\"\nversion = \"1.0.2\"\nsource = \"registry+https://x\"\n";
+        let marked = String::from_utf8(judges_lock(lock.into()).unwrap()).unwrap();
+        assert_eq!(marked, lock.replacen("\"0.1.0\"", "\"0.1.0-judge\"", 1));
         // A manifest without a package (a virtual workspace's) is left as it is.
         let virtual_manifest = "[workspace]\nmembers = [\"a\"]\n";
         assert_eq!(
