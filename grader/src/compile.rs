@@ -225,7 +225,8 @@ fn cargo_build(
         // registry crates have the features that `cargo build --workspace` gives them, where the
         // grader's own dependencies (the class's zip and csv) turn on some of memchr's, serde's and
         // flate2's. The checks alone resolved them otherwise, and the first grade after `cargo build
-        // --workspace` built 20 registry crates and everything above them again (43 s, now 8 s).
+        // --workspace` built 20 registry crates and everything above them again; now it builds the
+        // checks crate alone (7.7 s on a fresh clone).
         .args(["-p", "raylab-checks", "-p", "grader", "--bin", "raylab-checks"])
         .args(["--no-default-features", "--keep-going"])
         .args(["--message-format", "json"])

@@ -46,9 +46,9 @@ pub fn cargo(dir: &Path, args: &[&str], target: Option<&Path>) -> (String, Strin
 }
 
 /// The instructor's grader, built once with the tests' precision: as `cargo build --workspace`
-/// builds it (`--workspace --bin grader`, the registry crates with the workspace's features), which
-/// the README's test command has just done; `-p grader` alone resolved them otherwise and built
-/// serde, nix and the grader again.
+/// builds it (`--workspace --bin grader`, the registry crates with the workspace's features),
+/// which the README's test command has just done, so that nothing is built again whatever
+/// features `-p grader` alone would resolve.
 pub fn grader_binary() -> &'static Path {
     static BINARY: OnceLock<PathBuf> = OnceLock::new();
     BINARY.get_or_init(|| {
