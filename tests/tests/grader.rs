@@ -33,11 +33,7 @@ use support::*;
 #[test]
 fn the_reference_scores_full_marks() {
     let (grade, stderr) = grader(&["--strict"], &scratch().join("reference.json"));
-    let failing: Vec<String> = checks(&grade)
-        .iter()
-        .filter(|c| c["status"] != "passed")
-        .map(|c| format!("{} {}: {}", c["info"]["id"], c["status"], c["summary"]))
-        .collect();
+    let failing = not_passed(&grade);
     assert!(failing.is_empty(), "{}\n{stderr}", failing.join("\n"));
     assert_eq!(grade["score"], grade["max_score"]);
     assert!(checks(&grade).len() >= 150, "{} checks", checks(&grade).len());
@@ -371,12 +367,17 @@ fn chaos_ends_in_the_right_verdicts() {
     // the judge's packages at the instructor's versions, cargo found the judge's stubbed lecture
     // fresh and the reference's grade said "not started").
     let (grade, stderr) = grader(&["--strict", "01"], &scratch().join("after-the-judge.json"));
-    let failing: Vec<String> = checks(&grade)
+    let failing = not_passed(&grade);
+    assert!(failing.is_empty(), "after the judge's build:\n{}\n{stderr}", failing.join("\n"));
+}
+
+/// Every check of `grade` that did not pass, as `ID status: summary`.
+fn not_passed(grade: &Value) -> Vec<String> {
+    checks(grade)
         .iter()
         .filter(|c| c["status"] != "passed")
         .map(|c| format!("{} {}: {}", c["info"]["id"], c["status"], c["summary"]))
-        .collect();
-    assert!(failing.is_empty(), "after the judge's build:\n{}\n{stderr}", failing.join("\n"));
+        .collect()
 }
 
 #[test]
