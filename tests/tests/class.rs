@@ -118,7 +118,7 @@ impl Page {
 #[test]
 #[ignore = "the whole workbench (minutes): cargo test -p workbench-tests -- --ignored; CI runs it"]
 fn a_class_of_planted_mistakes_clusters_by_mistake_into_a_gradebook_of_the_single_grades() {
-    let _turn = WORK.lock().unwrap_or_else(|e| e.into_inner());
+    let _turn = work_turn();
     let catalogue = catalogue();
     let pool: Vec<Vec<&Mistake>> = POOL
         .iter()

@@ -100,6 +100,7 @@ fn the_handout_compiles_and_scores_zero_without_a_crash() {
     }
     no_solution_is_copied_into(&dir);
     let target = scratch().join("handout-target");
+    seed_registry_crates(&target);
     // It compiles, tests and all, without a warning (from the stubs, or from instructor code
     // left half out: a field only `grader dev sync` reads) (checked, not built: its
     // grader below builds what it runs).
@@ -339,7 +340,7 @@ const CHAOS: &[Chaos] = &[
 
 #[test]
 fn chaos_ends_in_the_right_verdicts() {
-    let _turn = WORK.lock().unwrap_or_else(|e| e.into_inner());
+    let _turn = work_turn();
     let patches: Vec<(&str, &str, String)> =
         CHAOS.iter().map(|c| (c.file, c.after, format!("{}{}", c.after, c.insert))).collect();
     let patches: Vec<(&str, &str, &str)> = patches.iter().map(|(f, a, r)| (*f, *a, r.as_str())).collect();
@@ -383,7 +384,7 @@ fn not_passed(grade: &Value) -> Vec<String> {
 #[test]
 #[ignore = "the whole workbench (minutes): cargo test -p workbench-tests -- --ignored; CI runs it"]
 fn a_type_error_costs_only_its_lecture_and_those_built_on_it() {
-    let _turn = WORK.lock().unwrap_or_else(|e| e.into_inner());
+    let _turn = work_turn();
     let file = "lectures/07-reflection-refraction/src/refract.rs";
     let text = std::fs::read_to_string(root().join(file)).unwrap();
     let signature =
@@ -419,7 +420,7 @@ fn a_type_error_costs_only_its_lecture_and_those_built_on_it() {
 #[test]
 #[ignore = "the whole workbench (minutes): cargo test -p workbench-tests -- --ignored; CI runs it"]
 fn each_week_grades_its_lectures_images_included() {
-    let _turn = WORK.lock().unwrap_or_else(|e| e.into_inner());
+    let _turn = work_turn();
     let handout = scratch().join("week-handout");
     let out = Command::new(grader_binary())
         .args(["handout", "--force", handout.to_str().unwrap()])
@@ -572,7 +573,7 @@ fn render_at_week(week: usize, lectures: &[String]) -> Vec<String> {
 /// 02's pictures are blocked by the camera exercise, not that 02's functions are wrong.
 #[test]
 fn an_earlier_lectures_bug_blocks_the_later_pictures_by_name() {
-    let _turn = WORK.lock().unwrap_or_else(|e| e.into_inner());
+    let _turn = work_turn();
     let file = "lectures/01-transforms/src/perspective.rs";
     let find = "let half_height = (0.5 * self.fovy).tan();";
     let dir = submission("blame", &[(file, find, "let half_height = self.fovy.tan();")]);
@@ -605,7 +606,7 @@ fn accepted() -> Vec<Accepted> {
 #[test]
 #[ignore = "the whole workbench (minutes): cargo test -p workbench-tests -- --ignored; CI runs it"]
 fn every_accepted_answer_passes_the_lectures_checks_and_its_tests() {
-    let _turn = WORK.lock().unwrap_or_else(|e| e.into_inner());
+    let _turn = work_turn();
     let answers = accepted();
     assert!(answers.len() >= 2, "{} accepted answers", answers.len());
     let mut refused = Vec::new();
@@ -631,8 +632,9 @@ fn every_accepted_answer_passes_the_lectures_checks_and_its_tests() {
         }
         let package = format!("l{}", a.file.split('/').nth(1).unwrap());
         let work = scratch().join("work");
-        let (stdout, stderr, ok) =
-            cargo(&work, &["test", "-q", "-p", &package, "--lib"], Some(&scratch().join("accepted-target")));
+        let target = scratch().join("accepted-target");
+        seed_registry_crates(&target);
+        let (stdout, stderr, ok) = cargo(&work, &["test", "-q", "-p", &package, "--lib"], Some(&target));
         if !ok {
             refused.push(format!("{}: the lecture's own tests fail:\n{stdout}\n{stderr}", a.name));
         }
@@ -662,7 +664,7 @@ fn the_catalogue_has_thirty_mistakes_whose_patches_apply() {
 #[test]
 #[ignore = "the whole workbench (minutes): cargo test -p workbench-tests -- --ignored; CI runs it"]
 fn every_catalogued_mistake_fails_the_check_that_should_catch_it() {
-    let _turn = WORK.lock().unwrap_or_else(|e| e.into_inner());
+    let _turn = work_turn();
     let mut missed = Vec::new();
     for m in catalogue() {
         let dir = submission("mistake", &[(&m.file, &m.find, &m.replace)]);
@@ -750,6 +752,7 @@ fn a_lecture_added_by_the_recipe_alone_is_graded_handed_out_and_in_the_book() {
     // Its own target folder, kept between runs (the copy's crates are other packages than the
     // tree's, and two workspaces writing one target's binaries would race).
     let target = copy.join("target");
+    seed_registry_crates(&target);
     let (out, stderr, ok) = cargo(&tree, &["run", "-q", "-p", "grader", "--", "dev", "sync"], Some(&target));
     assert!(ok, "grader dev sync failed:\n{out}\n{stderr}");
 

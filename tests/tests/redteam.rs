@@ -81,7 +81,7 @@ fn attacked() -> Vec<(String, String, String)> {
 #[test]
 #[ignore = "the whole workbench (minutes): cargo test -p workbench-tests -- --ignored; CI runs it"]
 fn attacks_on_the_verdict_score_nothing_and_change_nothing_else() {
-    let _turn = WORK.lock().unwrap_or_else(|e| e.into_inner());
+    let _turn = work_turn();
     let patches = attacked();
     let patches: Vec<(&str, &str, &str)> =
         patches.iter().map(|(f, a, r)| (f.as_str(), a.as_str(), r.as_str())).collect();
@@ -130,7 +130,7 @@ fn attacks_on_the_verdict_score_nothing_and_change_nothing_else() {
 /// build script, a file beside `src/`, and a checks file of the grader's.
 #[test]
 fn files_outside_the_lectures_sources_change_nothing() {
-    let _turn = WORK.lock().unwrap_or_else(|e| e.into_inner());
+    let _turn = work_turn();
     let dir = submission("outside", &[]);
     let lecture = dir.join("lectures/02-ray-casting");
     let manifest = std::fs::read_to_string(root().join("lectures/02-ray-casting/Cargo.toml")).unwrap();
@@ -156,7 +156,7 @@ fn files_outside_the_lectures_sources_change_nothing() {
 #[cfg(unix)]
 #[test]
 fn a_link_out_of_the_submission_is_refused_not_graded() {
-    let _turn = WORK.lock().unwrap_or_else(|e| e.into_inner());
+    let _turn = work_turn();
     let base = submission("linked-source", &[]);
     let dir = scratch().join("submissions/linked");
     for (link, to) in [
@@ -251,7 +251,7 @@ fn patch(file: &str, function: &str, attack: &str) -> (String, String, String) {
 
 #[test]
 fn snapshots_and_hidden_checks_are_out_of_the_students_reach() {
-    let _turn = WORK.lock().unwrap_or_else(|e| e.into_inner());
+    let _turn = work_turn();
     let images = "lectures/02-ray-casting/src/images.rs";
     let patches = [
         patch(images, "object_id_image", &COPY_SNAPSHOT.replace("SUFFIX", "\".id.png\"")),
@@ -328,7 +328,7 @@ const LECTURE_09_LAST: &str = "pub use traverse::{Closest, STACK_SIZE, Waiting};
 
 #[test]
 fn code_that_would_run_before_main_does_not_compile_and_the_list_is_the_judges() {
-    let _turn = WORK.lock().unwrap_or_else(|e| e.into_inner());
+    let _turn = work_turn();
     let attack = format!("{LECTURE_09_LAST}{BEFORE_MAIN}");
     let patches = [("lectures/09-acceleration/src/lib.rs", LECTURE_09_LAST, attack.as_str())];
     let dir = submission("before-main", &patches);
@@ -369,7 +369,8 @@ fn code_that_would_run_before_main_does_not_compile_and_the_list_is_the_judges()
 #[test]
 #[ignore = "the whole workbench (minutes): cargo test -p workbench-tests -- --ignored; CI runs it"]
 fn as_the_grading_user_the_students_code_can_neither_forge_nor_disturb_the_grade() {
-    let _turn = WORK.lock().unwrap_or_else(|e| e.into_inner());
+    // No turn of the shared work folder: this grade has a work folder of its own (the grading
+    // user's), and runs beside the others.
     let root_user = Command::new("id").arg("-u").output().is_ok_and(|o| o.stdout.trim_ascii() == b"0");
     if !cfg!(target_os = "linux") || !root_user {
         eprintln!(

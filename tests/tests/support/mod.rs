@@ -7,12 +7,19 @@
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
-use std::sync::{Mutex, OnceLock};
+use std::sync::OnceLock;
 
 use serde_json::Value;
 
-/// The work folder is shared: its tests take turns.
-pub static WORK: Mutex<()> = Mutex::new(());
+/// The shared work folder's turn: a test that builds or grades in it holds this lock on a file
+/// beside it, for as long as it uses the folder. A lock of the file system's, not of the process:
+/// CI runs the three test binaries side by side (`.ci/run`), and their tests take turns alike.
+pub fn work_turn() -> std::fs::File {
+    let path = scratch().join("work.lock");
+    let file = std::fs::File::options().create(true).truncate(false).write(true).open(&path).unwrap();
+    file.lock().unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    file
+}
 
 pub fn root() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).parent().unwrap().to_owned()
@@ -72,6 +79,78 @@ pub fn grader_binary() -> &'static Path {
 /// between the two and be rebuilt whole.
 pub fn incremental(command: &mut Command) -> &mut Command {
     command.env("CARGO_INCREMENTAL", "1")
+}
+
+/// Gives `target`, the target folder of a scratch copy of the tree that cargo has not built in
+/// yet, copies of what cargo compiled of the registry's crates in the instructor's build folder
+/// (their `.fingerprint`, `build` and `deps` entries, modification times kept), so that the
+/// copy's first build compiles its own crates only: the workspace's and the lectures', which
+/// are the copy's to prove. A registry crate is the same package at the same version with the
+/// same features in both workspaces, so cargo finds the copied unit fresh (same name and hash);
+/// a unit the copy needs otherwise (other features, another profile) is compiled as before.
+/// Path packages are never copied: a copy's `l01-transforms` hashes like the tree's (cargo
+/// hashes a path package by its place in the workspace) and would pass for it.
+///
+/// A cold build of the grader and the checks on the 2-core machine: 75 s wall, 143 s CPU, of
+/// which the registry crates 97 s (`cargo build -p grader -p raylab-checks --timings` in an
+/// empty target). Copies, not links: a build in the copy that rewrote a seeded file would write
+/// into the instructor's. Not for the work folder of a submission: its build adds flags of its own
+/// (`-F unsafe_code`, grader/src/compile.rs), which reach every crate, so no unit of the
+/// instructor's is fresh there.
+pub fn seed_registry_crates(target: &Path) {
+    if target.join("debug").exists() {
+        return;
+    }
+    let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
+    let out = Command::new(cargo)
+        .args(["metadata", "--format-version", "1", "--manifest-path"])
+        .arg(root().join("Cargo.toml"))
+        .output()
+        .expect("cargo metadata runs");
+    let metadata: Value = serde_json::from_slice(&out.stdout).expect("cargo metadata's JSON");
+    let registry: std::collections::HashSet<String> = metadata["packages"]
+        .as_array()
+        .expect("packages")
+        .iter()
+        .filter(|p| p["source"].as_str().is_some_and(|s| s.starts_with("registry+")))
+        .filter_map(|p| p["name"].as_str().map(|n| n.replace('-', "_")))
+        .collect();
+    let from = PathBuf::from(metadata["build_directory"].as_str().expect("a build directory")).join("debug");
+    // `name-0123456789abcdef` (a unit's folder), `libname-0123456789abcdef.rlib` or
+    // `name-0123456789abcdef.d` (its outputs): the package's or crate's name, `-` as `_`.
+    let is_registry = |file: &str| -> bool {
+        let stem = file.split('.').next().unwrap_or_default();
+        let Some((name, hash)) = stem.rsplit_once('-') else { return false };
+        let name = name.replace('-', "_");
+        hash.len() == 16
+            && hash.bytes().all(|b| b.is_ascii_hexdigit())
+            && (registry.contains(&name) || name.strip_prefix("lib").is_some_and(|n| registry.contains(n)))
+    };
+    for folder in [".fingerprint", "build", "deps"] {
+        let Ok(entries) = std::fs::read_dir(from.join(folder)) else { continue };
+        for entry in entries.filter_map(Result::ok) {
+            let name = entry.file_name().to_string_lossy().into_owned();
+            if is_registry(&name) {
+                copy_keeping_times(&entry.path(), &target.join("debug").join(folder).join(&name));
+            }
+        }
+    }
+}
+
+/// Copies a file or folder, each file's modification time kept (cargo compares them).
+fn copy_keeping_times(from: &Path, to: &Path) {
+    if from.is_dir() {
+        std::fs::create_dir_all(to).unwrap();
+        for entry in std::fs::read_dir(from).unwrap().filter_map(Result::ok) {
+            copy_keeping_times(&entry.path(), &to.join(entry.file_name()));
+        }
+    } else if from.is_file() {
+        std::fs::create_dir_all(to.parent().unwrap()).unwrap();
+        std::fs::copy(from, to).unwrap();
+        let modified = std::fs::metadata(from).and_then(|m| m.modified()).unwrap();
+        let file = std::fs::File::options().write(true).open(to).unwrap();
+        file.set_modified(modified).unwrap();
+    }
 }
 
 /// Runs the instructor's grader with `args` and reads the JSON it writes to `json`.
