@@ -118,11 +118,7 @@ impl Page {
 #[test]
 #[ignore = "the whole workbench (minutes): cargo test -p workbench-tests -- --ignored; CI runs it"]
 fn a_class_of_planted_mistakes_clusters_by_mistake_into_a_gradebook_of_the_single_grades() {
-    // A work folder of its own, not the shared one's turn: the class is graded beside the other
-    // tests' submissions (CI runs the test binaries side by side), its registry crates the shared
-    // folder's.
-    let work = scratch().join("class-work");
-    seed_work_folder(&work);
+    let _turn = work_turn();
     let catalogue = catalogue();
     let pool: Vec<Vec<&Mistake>> = POOL
         .iter()
@@ -174,7 +170,7 @@ fn a_class_of_planted_mistakes_clusters_by_mistake_into_a_gradebook_of_the_singl
             .arg("-o")
             .arg(&out)
             .arg("--workdir")
-            .arg(&work)
+            .arg(scratch().join("work"))
             .args(LECTURES)
             .output()
             .unwrap();
