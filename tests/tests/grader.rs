@@ -609,6 +609,8 @@ fn every_accepted_answer_passes_the_lectures_checks_and_its_tests() {
     let _turn = work_turn();
     let answers = accepted();
     assert!(answers.len() >= 2, "{} accepted answers", answers.len());
+    let target = scratch().join("accepted-target");
+    seed_registry_crates(&target);
     let mut refused = Vec::new();
     for a in answers {
         let text = std::fs::read_to_string(root().join(&a.file)).unwrap();
@@ -632,8 +634,6 @@ fn every_accepted_answer_passes_the_lectures_checks_and_its_tests() {
         }
         let package = format!("l{}", a.file.split('/').nth(1).unwrap());
         let work = scratch().join("work");
-        let target = scratch().join("accepted-target");
-        seed_registry_crates(&target);
         let (stdout, stderr, ok) = cargo(&work, &["test", "-q", "-p", &package, "--lib"], Some(&target));
         if !ok {
             refused.push(format!("{}: the lecture's own tests fail:\n{stdout}\n{stderr}", a.name));

@@ -101,13 +101,9 @@ pub fn seed_registry_crates(target: &Path) {
     if target.join("debug").exists() {
         return;
     }
-    let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
-    let out = Command::new(cargo)
-        .args(["metadata", "--format-version", "1", "--manifest-path"])
-        .arg(root().join("Cargo.toml"))
-        .output()
-        .expect("cargo metadata runs");
-    let metadata: Value = serde_json::from_slice(&out.stdout).expect("cargo metadata's JSON");
+    let (stdout, stderr, ok) = cargo(&root(), &["metadata", "--format-version", "1"], None);
+    assert!(ok, "cargo metadata failed:\n{stderr}");
+    let metadata: Value = serde_json::from_str(&stdout).expect("cargo metadata's JSON");
     let registry: std::collections::HashSet<String> = metadata["packages"]
         .as_array()
         .expect("packages")
