@@ -200,8 +200,10 @@ fn main() -> ExitCode {
                     platform::adopt_orphans();
                 }
                 let root = workspace::own_root();
-                let (ws, target) =
-                    submission::prepare(&root, &submission, workdir.as_deref(), run_as.first())?;
+                // Held until the grade ends (the rest of `prepared` lives to the end of this
+                // closure): another grader given this work folder waits for this grade.
+                let prepared = submission::prepare(&root, &submission, workdir.as_deref(), run_as.first())?;
+                let (ws, target) = (prepared.ws, prepared.target);
                 // Built beside the submission's build; waited for when its list is read.
                 let judge = submission::Judge::building(&root, &options());
                 let graded =

@@ -46,14 +46,24 @@ fn is_lecture_source(relative: &str) -> bool {
     parts.len() >= 3 && parts[0] == "lectures" && parts[2] == "src"
 }
 
-/// Prepares the work folder for `submission` and returns it, with the folder cargo builds the
-/// student's code in (`work/target`; as another user, `work/target/student`, theirs).
+/// A work folder prepared for one submission ([`prepare`]), held by its grade until dropped.
+pub struct Prepared {
+    /// The work folder's workspace: the instructor's tree with the submission's lectures.
+    pub ws: Workspace,
+    /// Where cargo builds the student's code (`work/target`; as another user,
+    /// `work/target/student`, theirs).
+    pub target: PathBuf,
+    /// The lock on `work/target/grade.lock` ([`hold`]).
+    _held: std::fs::File,
+}
+
+/// Prepares the work folder for `submission`, which it holds until the [`Prepared`] is dropped.
 pub fn prepare(
     root: &Path,
     submission: &Path,
     workdir: Option<&Path>,
     run_as: Option<&crate::platform::RunAs>,
-) -> Result<(Workspace, PathBuf), String> {
+) -> Result<Prepared, String> {
     let root = root.canonicalize().map_err(|e| format!("{}: {e}", root.display()))?;
     let submitted = find_lectures(submission)?;
     let work = workdir.map_or_else(|| root.join("target/grader/submission"), Path::to_owned);
@@ -62,6 +72,7 @@ pub fn prepare(
     }
     std::fs::create_dir_all(&work).map_err(|e| format!("{}: {e}", work.display()))?;
     let work = work.canonicalize().map_err(|e| format!("{}: {e}", work.display()))?;
+    let held = hold(&work)?;
     mirror(&root, &work, &|relative| {
         !under(relative, NOT_COPIED) && !is_lecture_source(relative) && !judges_only(relative)
     })?;
@@ -103,7 +114,28 @@ pub fn prepare(
         }
         None => work.join("target"),
     };
-    Ok((Workspace::open(&work)?, target))
+    Ok(Prepared { ws: Workspace::open(&work)?, target, _held: held })
+}
+
+/// Holds the work folder `work` for one grade: a lock on `work/target/grade.lock` (the file
+/// system's, so it holds across processes and ends with the process). A second grader given the
+/// same folder, a class and a single grade say, waits for the first to end: the two would write
+/// their lectures over each other's and build and run each other's code, each grade then reporting
+/// the other submission's answers as its own.
+fn hold(work: &Path) -> Result<std::fs::File, String> {
+    let dir = work.join("target");
+    std::fs::create_dir_all(&dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+    let path = dir.join("grade.lock");
+    let file = std::fs::File::create(&path).map_err(|e| format!("{}: {e}", path.display()))?;
+    match file.try_lock() {
+        Ok(()) => {}
+        Err(std::fs::TryLockError::WouldBlock) => {
+            eprintln!("{} is another grade's work folder now; waiting for that grade to end", work.display());
+            file.lock().map_err(|e| format!("{}: {e}", path.display()))?;
+        }
+        Err(std::fs::TryLockError::Error(e)) => return Err(format!("{}: {e}", path.display())),
+    }
+    Ok(file)
 }
 
 /// Removes from the work folder `work` what an earlier grader put there and only the judge may

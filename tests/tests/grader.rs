@@ -413,6 +413,42 @@ fn a_type_error_costs_only_its_lecture_and_those_built_on_it() {
     assert!(error["location"].as_str().unwrap().starts_with(file), "{error}");
 }
 
+/// Two grades given one work folder at once (an instructor grading a class and a single
+/// submission in the same folder, say) take turns: the second waits for the first, and each
+/// reports its own submission's answers, not the other's.
+#[test]
+#[ignore = "the whole workbench (minutes): cargo test -p workbench-tests -- --ignored; CI runs it"]
+fn two_grades_given_one_work_folder_take_turns_and_each_reports_its_own_code() {
+    let _turn = work_turn();
+    let mistake = catalogue()
+        .into_iter()
+        .find(|m| m.caught_by == "01/image/perspective")
+        .expect("a planted mistake the perspective picture catches");
+    let wrong = submission("turns-mistake", &[(&mistake.file, &mistake.find, &mistake.replace)]);
+    let right = submission("turns-reference", &[]);
+    let ((wrong, wrong_err), (right, right_err)) = std::thread::scope(|scope| {
+        let wrong = scope.spawn(|| grade_submission(&wrong, &["01"], "turns-mistake.json"));
+        let right = scope.spawn(|| grade_submission(&right, &["01"], "turns-reference.json"));
+        (wrong.join().unwrap(), right.join().unwrap())
+    });
+    assert_eq!(
+        status_of(&wrong, "01/image/perspective")["status"],
+        "failed",
+        "{}\n{wrong_err}",
+        mistake.name
+    );
+    for check in checks(&right) {
+        assert_eq!(
+            check["status"], "passed",
+            "the reference's {}: {}\n{right_err}",
+            check["info"]["id"], check["summary"]
+        );
+    }
+    let waited =
+        [&wrong_err, &right_err].iter().filter(|e| e.contains("waiting for that grade to end")).count();
+    assert_eq!(waited, 1, "one grade waits for the other:\n{wrong_err}\n---\n{right_err}");
+}
+
 /// "Week N" of the course: the reference's lectures up to N, the handout's stubs after it. Every
 /// check of lectures 01–N passes, images included (each lecture's stage draws with lectures ≤ N
 /// only); every check of a later lecture is not started or blocked, none crashed. The weeks are

@@ -397,7 +397,9 @@ impl Class<'_> {
         }
         let regraded = stale.unwrap_or_default();
         let graded = (|| {
-            let (ws, target) = crate::submission::prepare(root, path, Some(work), users.first())?;
+            // The work folder is this grade's until the closure ends (its pictures are read there).
+            let prepared = crate::submission::prepare(root, path, Some(work), users.first())?;
+            let (ws, target) = (&prepared.ws, prepared.target.clone());
             let mut grading = base.clone();
             grading.selection = if regraded.is_empty() {
                 options.selection.clone()
@@ -412,7 +414,7 @@ impl Class<'_> {
             grading.out_dir = Some(ws.root.join("target").join("grader"));
             grading.show_progress = false;
             grading.jobs = jobs;
-            let grade = crate::grade::grade(&ws, &grading)?;
+            let grade = crate::grade::grade(ws, &grading)?;
             std::fs::create_dir_all(&folder).map_err(|e| format!("{}: {e}", folder.display()))?;
             // The pictures of the last grade are not this one's (those of the lectures graded
             // again, when only some are).
