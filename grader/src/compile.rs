@@ -56,9 +56,10 @@ pub struct BuildOptions {
     pub f64: bool,
     /// Where cargo builds (`None`: the workspace's own `target/`).
     pub target_dir: Option<PathBuf>,
-    /// Where cargo keeps what it builds on the way (cargo's `build-dir`; `None`: in the target
-    /// folder): the judge's is the instructor's, so that the registry crates are built once for
-    /// both (`submission::judge`).
+    /// Where cargo keeps what it builds on the way (cargo's `build-dir`; `None`: cargo's own, the
+    /// target folder unless configured, and for a submission's build always its target folder):
+    /// the judge's is the instructor's, so that the registry crates are built once for both
+    /// (`submission::judge`).
     pub build_dir: Option<PathBuf>,
     /// Print cargo's progress lines ("Compiling l05-shading") to stderr.
     pub show_progress: bool,
@@ -244,6 +245,12 @@ fn cargo_build(
     }
     if let Some(dir) = &options.build_dir {
         command.env("CARGO_BUILD_BUILD_DIR", dir);
+    } else if let (true, Some(target)) = (options.submission, &options.target_dir) {
+        // A submission's build keeps all it builds in its own target folder, whatever the
+        // instructor's cargo configuration says: a `build-dir` shared by every workspace would put
+        // the student's crates, named as the instructor's are (cargo names a path package by its
+        // place in its workspace), over the instructor's, and out of the grading user's reach.
+        command.env("CARGO_BUILD_BUILD_DIR", target);
     }
     if options.submission {
         forbid_unsafe(&mut command);

@@ -118,11 +118,7 @@ impl Page {
 #[test]
 #[ignore = "the whole workbench (minutes): cargo test -p workbench-tests -- --ignored; CI runs it"]
 fn a_class_of_planted_mistakes_clusters_by_mistake_into_a_gradebook_of_the_single_grades() {
-    // A work folder of its own, not the shared one's turn: the class is graded beside the other
-    // tests' submissions (CI runs the test binaries side by side), its registry crates the shared
-    // folder's.
-    let work = scratch().join("class-work");
-    seed_work_folder(&work);
+    let _turn = work_turn();
     let catalogue = catalogue();
     let pool: Vec<Vec<&Mistake>> = POOL
         .iter()
@@ -174,7 +170,7 @@ fn a_class_of_planted_mistakes_clusters_by_mistake_into_a_gradebook_of_the_singl
             .arg("-o")
             .arg(&out)
             .arg("--workdir")
-            .arg(&work)
+            .arg(scratch().join("work"))
             .args(LECTURES)
             .output()
             .unwrap();
@@ -286,12 +282,7 @@ fn a_class_of_planted_mistakes_clusters_by_mistake_into_a_gradebook_of_the_singl
     let three = students.iter().find(|(_, m)| m.len() == 3).unwrap().0.clone();
     let camera = alone("01/image/perspective");
     for student in ["reference", &camera, &three] {
-        // In the class's work folder, not the shared one, whose turn this test does not take: graded
-        // there beside another test's grade (before the grader held a work folder for one grade at
-        // a time), the camera's mistake was written under that grade's build, which reported the
-        // mistake's values as the reference's.
-        let (single, _) =
-            grade_submission_in(&work, &submissions.join(student), &LECTURES, "class-single.json");
+        let (single, _) = grade_submission(&submissions.join(student), &LECTURES, "class-single.json");
         assert_eq!(row(student)[total], single["score"].to_string(), "{student}'s total");
         assert_eq!(row(student)[possible], single["max_score"].to_string(), "{student}'s possible");
     }

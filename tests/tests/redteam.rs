@@ -14,7 +14,7 @@
 
 mod support;
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::Command;
 
 use serde_json::Value;
@@ -479,10 +479,30 @@ fn as_the_grading_user_the_students_code_can_neither_forge_nor_disturb_the_grade
         .env("PATH", path)
         .env("CARGO_HOME", shared.join("cargo"))
         .env("CARGO_NET_OFFLINE", "true")
+        // The judge (root's) builds beside the instructor's build, not in it: with this cargo home
+        // every registry crate's path differs, and in the instructor's build folder cargo built
+        // the judge whole again, here and then for the next grade of another test (84 s each in
+        // CI). The student's build stays in its work folder, whatever this says.
+        .env("CARGO_BUILD_BUILD_DIR", shared.join("judge-build"))
         .output()
         .expect("the grader runs");
     let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
     assert!(out.status.success(), "the grader did not finish: {:?}\n{stderr}", out.status);
+    // The student's crates were built in the work folder, not in the build folder the grader's
+    // environment names (the judge's): the grading user could not have written there.
+    let built_in = |dir: &Path| {
+        std::fs::read_dir(dir.join("debug/.fingerprint"))
+            .map(|d| {
+                d.filter_map(Result::ok)
+                    .any(|e| e.file_name().to_string_lossy().starts_with("l02-ray-casting-"))
+            })
+            .unwrap_or(false)
+    };
+    assert!(
+        built_in(&shared.join("work/target/student")),
+        "the student's lecture 02 is not in its work folder"
+    );
+    assert!(built_in(&shared.join("judge-build")), "the judge's lecture 02 is not in its build folder");
     // (i) The results are the grader's, whole.
     let text = std::fs::read_to_string(&json).unwrap();
     let grade: Value = serde_json::from_str(&text).unwrap_or_else(|e| panic!("{e}: {text:.200}"));

@@ -94,37 +94,16 @@ pub fn incremental(command: &mut Command) -> &mut Command {
 /// A cold build of the grader and the checks on the 2-core machine: 75 s wall, 143 s CPU, of
 /// which the registry crates 97 s (`cargo build -p grader -p raylab-checks --timings` in an
 /// empty target). Copies, not links: a build in the copy that rewrote a seeded file would write
-/// into the instructor's. A submission's work folder is seeded from another work folder
-/// ([`seed_work_folder`]), not from here: its build adds flags of its own (`-F unsafe_code`,
-/// grader/src/compile.rs), which reach every crate, so no unit of the instructor's is fresh there.
+/// into the instructor's. Not for the work folder of a submission: its build adds flags of its own
+/// (`-F unsafe_code`, grader/src/compile.rs), which reach every crate, so no unit of the
+/// instructor's is fresh there.
 pub fn seed_registry_crates(target: &Path) {
-    let metadata = metadata();
-    let from = PathBuf::from(metadata["build_directory"].as_str().expect("a build directory"));
-    seed_registry_crates_from(&metadata, &from, target);
-}
-
-/// Gives `work`, a work folder of its own for a test's submissions, the registry's crates as
-/// the shared work folder's builds compiled them ([`seed_registry_crates`]): the first grade in
-/// it compiles the course's crates only. Nothing when the shared folder has not been built.
-pub fn seed_work_folder(work: &Path) {
-    // While no test builds in the shared folder.
-    let _turn = work_turn();
-    seed_registry_crates_from(&metadata(), &scratch().join("work/target"), &work.join("target"));
-}
-
-/// `cargo metadata` of the tree.
-fn metadata() -> Value {
-    let (stdout, stderr, ok) = cargo(&root(), &["metadata", "--format-version", "1"], None);
-    assert!(ok, "cargo metadata failed:\n{stderr}");
-    serde_json::from_str(&stdout).expect("cargo metadata's JSON")
-}
-
-/// Copies the registry crates' units of the build folder `from` into the target folder `target`,
-/// unless cargo has built there already.
-fn seed_registry_crates_from(metadata: &Value, from: &Path, target: &Path) {
     if target.join("debug").exists() {
         return;
     }
+    let (stdout, stderr, ok) = cargo(&root(), &["metadata", "--format-version", "1"], None);
+    assert!(ok, "cargo metadata failed:\n{stderr}");
+    let metadata: Value = serde_json::from_str(&stdout).expect("cargo metadata's JSON");
     let registry: std::collections::HashSet<String> = metadata["packages"]
         .as_array()
         .expect("packages")
@@ -132,7 +111,7 @@ fn seed_registry_crates_from(metadata: &Value, from: &Path, target: &Path) {
         .filter(|p| p["source"].as_str().is_some_and(|s| s.starts_with("registry+")))
         .filter_map(|p| p["name"].as_str().map(|n| n.replace('-', "_")))
         .collect();
-    let from = from.join("debug");
+    let from = PathBuf::from(metadata["build_directory"].as_str().expect("a build directory")).join("debug");
     // `name-0123456789abcdef` (a unit's folder), `libname-0123456789abcdef.rlib` or
     // `name-0123456789abcdef.d` (its outputs): the package's or crate's name, `-` as `_`.
     let is_registry = |file: &str| -> bool {
@@ -237,19 +216,9 @@ pub fn copy_tree(from: &Path, to: &Path) {
     }
 }
 
-/// Grades `submission` in the shared work folder (hidden checks included); the caller holds the
-/// folder's turn ([`work_turn`]).
+/// Grades `submission` in the shared work folder (hidden checks included).
 pub fn grade_submission(submission: &Path, select: &[&str], json_name: &str) -> (Value, String) {
-    grade_submission_in(&scratch().join("work"), submission, select, json_name)
-}
-
-/// Grades `submission` in the work folder `work` (hidden checks included).
-pub fn grade_submission_in(
-    work: &Path,
-    submission: &Path,
-    select: &[&str],
-    json_name: &str,
-) -> (Value, String) {
+    let work = scratch().join("work");
     let mut args =
         vec!["grade", "--submission", submission.to_str().unwrap(), "--workdir", work.to_str().unwrap()];
     args.extend_from_slice(select);
