@@ -125,14 +125,26 @@ pub fn prepare(
 fn hold(work: &Path) -> Result<std::fs::File, String> {
     let dir = work.join("target");
     std::fs::create_dir_all(&dir).map_err(|e| format!("{}: {e}", dir.display()))?;
-    let path = dir.join("grade.lock");
-    let file = std::fs::File::create(&path).map_err(|e| format!("{}: {e}", path.display()))?;
+    let waiting =
+        format!("{} is another grade's work folder now; waiting for that grade to end", work.display());
+    take_lock(&dir.join("grade.lock"), &waiting)
+}
+
+/// A lock on the file `path` (made if missing), held until the file is dropped: at once, or after
+/// saying `waiting` when another process holds it. Where the file system has no locks (some
+/// network file systems), a warning, and no lock.
+fn take_lock(path: &Path, waiting: &str) -> Result<std::fs::File, String> {
+    let file = std::fs::File::create(path).map_err(|e| format!("{}: {e}", path.display()))?;
     match file.try_lock() {
         Ok(()) => {}
         Err(std::fs::TryLockError::WouldBlock) => {
-            eprintln!("{} is another grade's work folder now; waiting for that grade to end", work.display());
+            eprintln!("{waiting}");
             file.lock().map_err(|e| format!("{}: {e}", path.display()))?;
         }
+        Err(std::fs::TryLockError::Error(e)) if e.kind() == std::io::ErrorKind::Unsupported => eprintln!(
+            "warning: {} cannot be locked on this file system ({e}): give it to one grader at a time",
+            path.display()
+        ),
         Err(std::fs::TryLockError::Error(e)) => return Err(format!("{}: {e}", path.display())),
     }
     Ok(file)
@@ -260,8 +272,7 @@ pub fn judge(root: &Path, options: &crate::grade::GradeOptions) -> Result<PathBu
     let lock_path = tree.with_extension("lock");
     std::fs::create_dir_all(root.join("target").join("grader"))
         .map_err(|e| format!("{}: {e}", lock_path.display()))?;
-    let lock = std::fs::File::create(&lock_path).map_err(|e| format!("{}: {e}", lock_path.display()))?;
-    lock.lock().map_err(|e| format!("{}: {e}", lock_path.display()))?;
+    let _lock = take_lock(&lock_path, "another grader is building the judge; waiting for its build")?;
     let keep = |relative: &str| !under(relative, NOT_COPIED) && !is_lecture_source(relative);
     mirror_as(&root, &tree, &keep, &|relative, bytes| {
         if relative.ends_with("Cargo.toml") && relative != "Cargo.toml" {
