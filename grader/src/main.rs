@@ -96,8 +96,8 @@ enum Cmd {
         /// The student's workspace (or a folder with its `lectures/`).
         #[arg(long)]
         submission: PathBuf,
-        /// The scratch workspace to grade in (kept between runs so that builds are incremental)
-        /// [default: target/grader/submission].
+        /// The scratch workspace to grade in (kept between runs so that builds are incremental;
+        /// one grade's at a time: another grader given it waits) [default: target/grader/submission].
         #[arg(long)]
         workdir: Option<PathBuf>,
         /// Build and run the student's code as these users (Unix; the grader runs as root): users
