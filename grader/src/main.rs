@@ -13,6 +13,7 @@ mod class;
 // INSTRUCTOR END
 mod compile;
 mod grade;
+mod gradescope;
 mod handout;
 mod output;
 mod platform;
@@ -215,7 +216,7 @@ fn main() -> ExitCode {
             })
         }
         Some(Cmd::Gradescope { dir, force }) => {
-            submission::gradescope_bundle(&workspace::own_root(), &dir, force).map(|()| true)
+            gradescope::bundle(&workspace::own_root(), &dir, force).map(|()| true)
         }
         Some(Cmd::Render { args }) => forward("render", &args),
         Some(Cmd::Bless { args }) => forward("bless", &args),
