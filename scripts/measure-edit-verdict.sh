@@ -1,12 +1,15 @@
 #!/usr/bin/env bash
 # A student's loop, measured: edit → verdict per lecture. For each lecture 01–10, three rounds
-# alternating the lectures: a one-line edit (a comment appended to the lecture's lib.rs), then
-# `cargo run -q -p grader -- NN` (total); then the same command again with nothing to rebuild
-# (rerun: cargo's no-op and the checks' run). Prints per lecture the medians of total and rerun,
-# and their difference (rebuild: the lecture, the checks crate and the link).
+# alternating the lectures: a one-line change in an exercise (a statement, `std::hint::black_box(i);`,
+# put first in the body of the lecture's first exercise, in file order: code the compiler must
+# compile again), then `cargo run -q -p grader -- NN` (total); then the same command again with
+# nothing to rebuild (rerun: cargo's no-op and the checks' run). Prints per lecture the medians of
+# total and rerun, and their difference (rebuild: the lecture, the checks crate and the link).
 #
 #   scripts/measure-edit-verdict.sh             the table (~2 minutes on 2 cores)
 #   ROUNDS=5 scripts/measure-edit-verdict.sh    medians of 5 rounds (the machine's noise is ±0.1 s)
+#   EDIT=comment scripts/measure-edit-verdict.sh   the edit a comment appended to lib.rs instead
+#                                               (the table before session 25: cheaper to rebuild)
 #   scripts/measure-edit-verdict.sh --debuginfo the relink after an edit and a cold build of the
 #                                               checks, with the workspace's debug info against
 #                                               full debug info everywhere (~3 minutes)
@@ -50,9 +53,17 @@ cargo run -q -p grader > /dev/null 2>&1 || true
 for i in $(seq 1 "${ROUNDS:-3}"); do
   for d in lectures/[0-9][0-9]-*/; do
     n=$(basename "$d" | cut -c1-2)
-    f=$d/src/lib.rs
-    cp "$f" "$raw.bak"
-    echo "// edit $i" >> "$f"
+    if [ "${EDIT:-code}" = comment ]; then
+      f=$d/src/lib.rs
+      cp "$f" "$raw.bak"
+      echo "// edit $i" >> "$f"
+    else
+      f=$(grep -l '// SOLUTION BEGIN' "$d"src/*.rs | sort | head -1)
+      cp "$f" "$raw.bak"
+      # After the first `// SOLUTION BEGIN` only, with its indentation.
+      awk -v i="$i" '!done && /\/\/ SOLUTION BEGIN/ { print; sub(/\/\/ SOLUTION BEGIN.*/, ""); print $0 "std::hint::black_box(" i ");"; done = 1; next } { print }' \
+        "$raw.bak" > "$f"
+    fi
     s=$(date +%s.%N)
     cargo run -q -p grader -- "$n" > /dev/null 2>&1 || true
     e=$(date +%s.%N)
