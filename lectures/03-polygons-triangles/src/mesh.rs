@@ -51,13 +51,13 @@ pub fn hit_mesh(ray: &Ray, mesh: &Mesh, range: Interval) -> Option<Hit> {
     // The same test again, in the caller's range (which holds its t): the same hit.
     let hit = hit_triangle(ray, &vertices, normals.as_ref(), range)?;
 
-    // The texture coordinates from the mesh's, when it has them.
-    if mesh.uvs.is_empty() {
-        return Some(hit);
+    // The texture coordinates from the mesh's, when it has them (else the triangle's (β, γ)).
+    if !mesh.uvs.is_empty() {
+        let (beta, gamma) = (hit.uv.x, hit.uv.y);
+        let uv: Vec2 = (1.0 - beta - gamma) * mesh.uvs[a] + beta * mesh.uvs[b] + gamma * mesh.uvs[c];
+        return Some(hit.with_uv(uv));
     }
-    let (beta, gamma) = (hit.uv.x, hit.uv.y);
-    let uv: Vec2 = (1.0 - beta - gamma) * mesh.uvs[a] + beta * mesh.uvs[b] + gamma * mesh.uvs[c];
-    Some(hit.with_uv(uv))
+    Some(hit)
     // SOLUTION END
 }
 
