@@ -52,7 +52,9 @@ fn regions(ws: &Workspace) -> Vec<Region> {
             "dependencies",
             lectures
                 .iter()
-                .map(|l| format!("{} = {{ path = \"../../lectures/{}\", optional = true }}\n", l.package, l.folder))
+                .map(|l| {
+                    format!("{} = {{ path = \"../../lectures/{}\", optional = true }}\n", l.package, l.folder)
+                })
                 .collect(),
         ),
         region(
@@ -67,16 +69,17 @@ fn regions(ws: &Workspace) -> Vec<Region> {
                 .iter()
                 .map(|l| {
                     let n = &l.number;
-                    format!(
-                        "        Lecture {{ number: \"{n}\", checks: l{n}::CHECKS, run: runner!(\"l{n}\", l{n}::run), hidden: false }},\n"
-                    )
+                    format!("        lecture!(\"{n}\", l{n}, \"l{n}\"),\n")
                 })
                 .collect(),
         ),
         region(
             "book/doctests/Cargo.toml",
             "dependencies",
-            lectures.iter().map(|l| format!("{} = {{ path = \"../../lectures/{}\" }}\n", l.package, l.folder)).collect(),
+            lectures
+                .iter()
+                .map(|l| format!("{} = {{ path = \"../../lectures/{}\" }}\n", l.package, l.folder))
+                .collect(),
         ),
         region(
             "book/doctests/src/lib.rs",
@@ -100,7 +103,13 @@ fn regions(ws: &Workspace) -> Vec<Region> {
             "lectures",
             std::iter::once("| folder | chapter | what you write |\n|---|---|---|\n".to_owned())
                 .chain(lectures.iter().map(|l| {
-                    format!("| `lectures/{}` | [{}]({}.md) | {} |\n", l.folder, chapter(l), l.folder, l.summary)
+                    format!(
+                        "| `lectures/{}` | [{}]({}.md) | {} |\n",
+                        l.folder,
+                        chapter(l),
+                        l.folder,
+                        l.summary
+                    )
                 }))
                 .collect(),
         ),

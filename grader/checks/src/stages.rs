@@ -21,10 +21,9 @@
 //! sky in the mirror and refracted directions instead of tracing them into the
 //! scene: that is lecture 08's `trace`.
 
-use raylab::{Color, Image, Ray, Scene, Vec3};
+use raylab::{Color, Hit, Image, Intersector, Ray, Scene, Vec3};
 
-#[allow(unused_imports, reason = "used by the stages that shade, where their lectures are built")]
-use crate::settings;
+use crate::trees::TreeNode;
 
 /// One lecture's stage: what its pictures are drawn with and how they are explained. The
 /// declaration of the stages is [`STAGES`], one row per lecture; everything else asks it.
@@ -70,12 +69,6 @@ pub enum Draws {
 }
 
 impl Draws {
-    /// Whether the picture is shaded by the lectures' shading (05 on): the stages whose
-    /// pictures have calls on their path (the `path` module).
-    pub fn shades(self) -> bool {
-        !matches!(self, Draws::Sky | Draws::Headlight)
-    }
-
     /// Whether it casts shadow rays (06's shading).
     pub fn shadows(self) -> bool {
         matches!(self, Draws::Shadowed | Draws::Whitted | Draws::Complete)
@@ -84,11 +77,6 @@ impl Draws {
     /// Whether mirrors and glass show something in 07's directions.
     pub fn mirrors(self) -> bool {
         matches!(self, Draws::Mirrored | Draws::Whitted | Draws::Complete)
-    }
-
-    /// Whether it traces lecture 08's ray tree.
-    pub fn traces(self) -> bool {
-        matches!(self, Draws::Whitted | Draws::Complete)
     }
 }
 
@@ -268,13 +256,19 @@ pub fn drawing(file: &crate::scenes::SceneFile) -> Vec<&str> {
     if file.lecture == FINAL_STAGE { vec![FINAL_STAGE] } else { vec![file.lecture.as_str(), FINAL_STAGE] }
 }
 
-/// Whether stage `lecture`'s code is in this build (its lecture and the ones it draws with
-/// compiled: the lecture's feature turns those on; the final stage's is every lecture).
+/// Whether stage `lecture`'s code is in this build: all it draws with is lent (its lecture and
+/// the ones it draws with compiled: the lecture's feature turns those on).
 pub fn built(lecture: &str) -> bool {
-    if lecture == FINAL_STAGE {
-        return cfg!(feature = "complete");
-    }
-    crate::lectures::lectures().iter().any(|l| l.number == lecture && !l.hidden && l.run.is_some())
+    let (Some(row), lent) = (stage(lecture), lent()) else { return false };
+    let finds = row.finds == Finds::Nothing || lent.finder(row.finds).is_some();
+    let draws = match row.draws {
+        Draws::Sky | Draws::Headlight => lent.camera.is_some(),
+        Draws::Local | Draws::Shadowed | Draws::Mirrored => {
+            lent.camera.is_some() && lent.drawer(row.draws).is_some()
+        }
+        Draws::Whitted | Draws::Complete => lent.drawer(row.draws).is_some(),
+    };
+    finds && draws
 }
 
 /// Stage 01's colour of a ray: its unit direction d as a colour, ½ + ½d
@@ -310,167 +304,184 @@ pub fn headlight(scene: &Scene, ray: &Ray, hit: &raylab::Hit) -> Color {
     k_d * (0.5 + 0.5 * hit.normal.dot(v))
 }
 
+/// The primary ray of pixel (x, y): lecture 01's camera over a scene.
+pub type PixelRays = Box<dyn Fn(u32, u32) -> Ray + Sync>;
+
+/// Lecture 01's camera over a scene, or why it has none.
+pub type Camera = fn(&Scene) -> Result<PixelRays, String>;
+
+/// The colours and ray trees of some pixels of a scene, at a stage that traces (08, 10).
+pub type Traced = fn(&Scene, &[(u32, u32)]) -> Option<Vec<(Color, TreeNode)>>;
+
+/// An intersector over a scene's objects.
+pub type Finder = for<'a> fn(&'a Scene) -> Box<dyn Intersector + 'a>;
+
+/// The calls on a picture's path at one pixel, made into a trail (the `path` module): the stage,
+/// the scene, the pixel. `None` where the stage makes none there.
+pub type Calls = fn(&str, &Scene, (u32, u32), &mut crate::path::Trail) -> Option<()>;
+
+/// How a stage that shades (05 on) draws, lent by its lecture's checks.
+#[derive(Clone, Copy)]
+pub enum Drawer {
+    /// The colour of each eye ray's closest hit, found by the stage's intersector (05–07), and at
+    /// 07 the rays to the sky that colour shows (k, direction, whether transmitted).
+    Shades {
+        shade: fn(&Scene, &dyn Intersector, &Ray, &Hit) -> Color,
+        sky_rays: Option<SkyRays>,
+        calls: Calls,
+    },
+    /// A tracer of its own (08, 10): the picture, the colours and ray trees of some pixels, and the
+    /// exercise that makes a pixel from the calls on its path.
+    Traces {
+        render: fn(&Scene) -> Result<Image, String>,
+        traced: Traced,
+        calls: Calls,
+        pixel_loop: fn(&Scene) -> &'static str,
+    },
+}
+
+/// Stage 07's rays to the sky from a hit: (k, direction, whether it is the transmitted one).
+pub type SkyRays = fn(&Scene, &Ray, &Hit) -> Vec<(Color, Vec3, bool)>;
+
+/// Which geometry image: object ids, depths or normals (lecture 02's three).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum GeometryImage {
+    Id,
+    Depth,
+    Normal,
+}
+
+/// Lecture 02's geometry images and the colour of an object's id in them.
+#[derive(Clone, Copy)]
+pub struct Geometry {
+    /// The image of `scene` through an intersector, from lecture 01's camera.
+    pub image: fn(&Scene, GeometryImage, &dyn Intersector) -> Result<Image, String>,
+    /// The colour object `index` has in an id image.
+    pub id_color: fn(usize) -> Color,
+}
+
+/// The code the stages draw with, lent by the lectures built (each lecture's checks lend theirs,
+/// `lectures::lend`, and `main` installs the whole, [`install`], before a check runs): what lets
+/// the rest of the checks draw a lecture's pictures without naming the lecture. A stage is built
+/// when all it draws with is lent ([`built`]).
+#[derive(Default)]
+pub struct Lent {
+    /// Lecture 01's camera: each pixel's primary ray.
+    pub camera: Option<Camera>,
+    /// The intersectors, by the [`Finds`] that names them (02, 03, 04, 09).
+    pub finders: Vec<(Finds, Finder)>,
+    /// Lecture 02's geometry images.
+    pub geometry: Option<Geometry>,
+    /// The shading stages' drawing, by the [`Draws`] that names it (05, 06, 07, 08, 10).
+    pub drawers: Vec<(Draws, Drawer)>,
+}
+
+impl Lent {
+    fn finder(&self, finds: Finds) -> Option<Finder> {
+        self.finders.iter().find(|(f, _)| *f == finds).map(|&(_, finder)| finder)
+    }
+
+    fn drawer(&self, draws: Draws) -> Option<Drawer> {
+        self.drawers.iter().find(|(d, _)| *d == draws).map(|&(_, drawer)| drawer)
+    }
+}
+
+static LENT: std::sync::OnceLock<Lent> = std::sync::OnceLock::new();
+
+/// Makes `lent` the stages' code for the rest of the process; the first call wins.
+pub fn install(lent: Lent) {
+    let _ = LENT.set(lent);
+}
+
+/// The code lent to the stages; nothing before [`install`].
+pub fn lent() -> &'static Lent {
+    static NOTHING: std::sync::OnceLock<Lent> = std::sync::OnceLock::new();
+    LENT.get().unwrap_or_else(|| NOTHING.get_or_init(Lent::default))
+}
+
+/// The drawer of stage `lecture`, where it shades and is lent.
+pub fn drawer(lecture: &str) -> Option<Drawer> {
+    lent().drawer(stage(lecture)?.draws)
+}
+
+/// Each pixel's primary ray of `scene` from lecture 01's camera, where it is lent.
+pub fn camera(scene: &Scene) -> Option<Result<PixelRays, String>> {
+    Some((lent().camera?)(scene))
+}
+
+/// Lecture 02's geometry images, where they are lent.
+pub fn geometry() -> Option<Geometry> {
+    lent().geometry
+}
+
 /// Scene `scene` drawn by stage `lecture`.
-#[allow(unused_variables)]
 pub fn render(lecture: &str, scene: &Scene) -> Result<Image, String> {
     let unbuilt =
         || format!("stage {lecture} is not in this build: its lecture or one it draws with does not compile");
     let Some(stage) = stage(lecture).filter(|_| built(lecture)) else { return Err(unbuilt()) };
-    #[cfg(feature = "l01")]
-    {
-        let camera = l01_transforms::Camera::from_scene(&scene.camera, scene.width, scene.height)
-            .map_err(|e| e.to_string())?;
-        let (w, h) = (scene.width, scene.height);
-        let pixels = |f: &(dyn Fn(&Ray) -> Color + Sync)| {
-            raylab::render::render_image(w, h, |x, y| f(&camera.pixel_ray(x, y, w, h))).0
-        };
-        // The closest hit in (0, ∞) of `objects`, shaded by `shade`, or the background.
-        type Shade<'a> = &'a (dyn Fn(&Ray, &raylab::Hit) -> Color + Sync);
-        #[allow(unused)]
-        let drawn = |objects: &dyn raylab::Intersector, shade: Shade| {
-            Ok::<Image, String>(pixels(
-                &|ray: &Ray| match objects.closest_hit(ray, raylab::Interval::POSITIVE) {
-                    Some(hit) => shade(ray, &hit),
-                    None => scene.background,
-                },
-            ))
-        };
-        let headlit: Shade = &|ray, hit| headlight(scene, ray, hit);
-        // The tracing stages find their own hits.
-        let objects = if stage.draws.traces() { None } else { intersector(lecture, scene) };
-        match (stage.draws, objects.as_deref()) {
-            (Draws::Sky, _) => return Ok(pixels(&sky)),
-            (Draws::Headlight, Some(objects)) => return drawn(objects, headlit),
-            #[cfg(feature = "l05")]
-            (Draws::Local, Some(objects)) => return drawn(objects, &|ray, hit| local(scene, ray, hit)),
-            #[cfg(feature = "l06")]
-            (Draws::Shadowed, Some(objects)) => {
-                return drawn(objects, &|ray, hit| shadowed(scene, objects, ray, hit));
-            }
-            #[cfg(feature = "l07")]
-            (Draws::Mirrored, Some(objects)) => return drawn(objects, &|ray, hit| mirrored(scene, ray, hit)),
-            #[cfg(feature = "l08")]
-            (Draws::Whitted, _) => {
-                return l08_ray_tree::render_scene(scene, &settings::scene_settings(scene))
-                    .map(|(image, _)| image);
-            }
-            #[cfg(feature = "complete")]
-            (Draws::Complete, _) => {
-                use crate::tracer::{render_scene, scene_sampling};
-                return render_scene(scene, None, &settings::scene_settings(scene), scene_sampling(scene))
-                    .map(|(image, _)| image);
-            }
-            _ => {}
-        }
+    let drawer = lent().drawer(stage.draws);
+    if let Some(Drawer::Traces { render, .. }) = drawer {
+        return render(scene);
     }
-    Err(unbuilt())
+    let rays = camera(scene).ok_or_else(unbuilt)??;
+    let (w, h) = (scene.width, scene.height);
+    let pixels =
+        |f: &(dyn Fn(&Ray) -> Color + Sync)| raylab::render::render_image(w, h, |x, y| f(&rays(x, y))).0;
+    if stage.draws == Draws::Sky {
+        return Ok(pixels(&sky));
+    }
+    let objects = intersector(lecture, scene).ok_or_else(unbuilt)?;
+    let objects = objects.as_ref();
+    // The closest hit in (0, ∞), shaded by the stage, or the background.
+    let drawn = |shade: &(dyn Fn(&Ray, &Hit) -> Color + Sync)| {
+        pixels(&|ray: &Ray| match objects.closest_hit(ray, raylab::Interval::POSITIVE) {
+            Some(hit) => shade(ray, &hit),
+            None => scene.background,
+        })
+    };
+    match drawer {
+        Some(Drawer::Shades { shade, .. }) => Ok(drawn(&|ray, hit| shade(scene, objects, ray, hit))),
+        _ if stage.draws == Draws::Headlight => Ok(drawn(&|ray, hit| headlight(scene, ray, hit))),
+        _ => Err(unbuilt()),
+    }
 }
 
 /// The intersector stage `lecture` finds the closest hits with (its row's [`Finds`]); `None`
 /// at a stage that finds none, or where it is not built.
-pub fn intersector<'a>(lecture: &str, scene: &'a Scene) -> Option<Box<dyn raylab::Intersector + 'a>> {
+pub fn intersector<'a>(lecture: &str, scene: &'a Scene) -> Option<Box<dyn Intersector + 'a>> {
     finder(stage(lecture)?.finds, scene)
 }
 
 /// The intersector `finds` names, over `scene`'s objects, where it is built.
-#[allow(unused_variables)]
-pub fn finder(finds: Finds, scene: &Scene) -> Option<Box<dyn raylab::Intersector + '_>> {
-    match finds {
-        #[cfg(feature = "l02")]
-        Finds::Group => Some(Box::new(l02_ray_casting::Group::new(&scene.objects))),
-        #[cfg(feature = "l03")]
-        Finds::Shapes => Some(Box::new(crate::scene_objects::Lecture03(&scene.objects))),
-        #[cfg(feature = "l04")]
-        Finds::BruteForce => Some(Box::new(l04_quadrics_transforms::BruteForce::new(&scene.objects))),
-        #[cfg(feature = "l09")]
-        Finds::Hierarchy => Some(l09_acceleration::intersector_for(&scene.objects)),
-        _ => None,
-    }
+pub fn finder(finds: Finds, scene: &Scene) -> Option<Box<dyn Intersector + '_>> {
+    Some((lent().finder(finds)?)(scene))
 }
 
-/// Stage 05: 05's `shade_local` with the material's own colour, V = −d/|d|.
-#[cfg(feature = "l05")]
-fn local(scene: &Scene, ray: &Ray, hit: &raylab::Hit) -> Color {
-    let Some(material) = scene.materials.get(hit.material) else { return scene.background };
-    l05_shading::shade_local(
-        material,
-        material.diffuse,
-        hit,
-        -ray.dir.normalize(),
-        &scene.lights,
-        scene.ambient,
-    )
+/// The calls on stage `stage`'s path at pixel `pixel` of `scene` (the `path` module); `None` at a
+/// stage without calls or whose code is not in this build.
+pub fn calls(stage: &str, scene: &Scene, pixel: (u32, u32)) -> Option<Vec<crate::path::Call>> {
+    let (Drawer::Shades { calls, .. } | Drawer::Traces { calls, .. }) =
+        drawer(stage).filter(|_| built(stage))?;
+    crate::path::record(|trail| calls(stage, scene, pixel, trail))
 }
 
-/// Stage 06: 06's `shade_with_shadows` with the scene's shadow settings.
-#[cfg(feature = "l06")]
-fn shadowed(scene: &Scene, objects: &dyn raylab::Intersector, ray: &Ray, hit: &raylab::Hit) -> Color {
-    use l06_shadows::Surface;
-    let Some(material) = scene.materials.get(hit.material) else { return scene.background };
-    let settings = settings::shadow_settings(scene);
-    let surface = Surface {
-        material,
-        diffuse: material.diffuse,
-        hit: *hit,
-        v: -ray.dir.normalize(),
-        origin: ray.origin,
-    };
-    l06_shadows::shade_with_shadows(
-        objects,
-        &scene.materials,
-        &surface,
-        &scene.lights,
-        scene.ambient,
-        settings,
-    )
-}
-
-/// Stage 07: local shading, plus k_r times the sky ([`direction_color`]) in
-/// 07's mirror direction, plus k_t times the sky in 07's refracted direction
-/// (with 07's `interface`), or in the mirror direction where `refract` finds
-/// total internal reflection. One bounce, to the sky: the rays are not traced
-/// into the scene (lecture 08), and there is no Fresnel split.
-#[cfg(feature = "l07")]
-fn mirrored(scene: &Scene, ray: &Ray, hit: &raylab::Hit) -> Color {
-    let mut color = local(scene, ray, hit);
-    for (k, direction, _) in sky_rays(scene, ray, hit) {
-        color += k * direction_color(direction);
+/// The exercise that makes a pixel of stage `stage` from the calls on its path, where that is a
+/// student's: lecture 08's `render` (one eye ray per pixel centre), or lecture 10's
+/// `render_supersampled` where the scene asks for several rays. A pixel that differs where every
+/// call agrees is that exercise's.
+pub fn pixel_loop(stage: &str, scene: &Scene) -> Option<&'static str> {
+    match drawer(stage)? {
+        Drawer::Traces { pixel_loop, .. } => Some(pixel_loop(scene)),
+        Drawer::Shades { .. } => None,
     }
-    color
-}
-
-/// Stage 07's rays to the sky from `hit`: (k_r, 07's mirror direction) on a reflective material,
-/// (k_t, 07's refracted direction, or the mirror direction where `refract` finds total internal
-/// reflection) on a transparent one, each with whether it is the transmitted one.
-#[cfg(feature = "l07")]
-fn sky_rays(scene: &Scene, ray: &Ray, hit: &raylab::Hit) -> Vec<(Color, Vec3, bool)> {
-    use l07_reflection_refraction::{interface, mirror_direction, refract};
-    let Some(material) = scene.materials.get(hit.material) else { return Vec::new() };
-    let d = ray.dir.normalize();
-    let mirror = || mirror_direction(d, hit.normal);
-    let mut rays = Vec::new();
-    if material.reflective != raylab::BLACK {
-        rays.push((material.reflective, mirror(), false));
-    }
-    if material.transparent != raylab::BLACK {
-        let crossing = interface(hit, material.ior);
-        let through = refract(d, crossing.normal, crossing.eta_ratio()).unwrap_or_else(mirror);
-        rays.push((material.transparent, through, true));
-    }
-    rays
 }
 
 /// The ray tree of pixel (x, y) of `scene` at a stage that traces one (08 and
 /// 10), as text with the pixel's colour; `None` at the other stages.
-#[allow(unused_variables)]
-pub fn pixel_tree(stage: &str, scene: &Scene, (x, y): (u32, u32)) -> Option<String> {
-    #[cfg(feature = "l08")]
-    {
-        let (color, tree) = traced(stage, scene, &[(x, y)])?.pop()?;
-        Some(format!("colour ({:.3}, {:.3}, {:.3})\n{tree}", color.x, color.y, color.z))
-    }
-    #[cfg(not(feature = "l08"))]
-    None
+pub fn pixel_tree(stage: &str, scene: &Scene, pixel: (u32, u32)) -> Option<String> {
+    let Some(Drawer::Traces { traced, .. }) = drawer(stage).filter(|_| built(stage)) else { return None };
+    let (color, tree) = traced(scene, &[pixel])?.pop()?;
+    Some(format!("colour ({:.3}, {:.3}, {:.3})\n{tree}", color.x, color.y, color.z))
 }
 
 /// The ray trees of the report's grid of pixels ([`crate::trees::grid`]) for its 3D view: at
@@ -478,73 +489,37 @@ pub fn pixel_tree(stage: &str, scene: &Scene, (x, y): (u32, u32)) -> Option<Stri
 /// the camera's ray (01), its closest hit (02–07, 09; stages 05 and 06 shade inside 05's and 06's
 /// functions, which record nothing), and at 07 the mirror and refracted rays to the sky. `None`
 /// where the stage is not built.
-pub fn grid_trees(stage: &str, scene: &Scene) -> Option<Vec<crate::trees::TreeNode>> {
+pub fn grid_trees(stage: &str, scene: &Scene) -> Option<Vec<TreeNode>> {
     trees(stage, scene, &crate::trees::grid(scene.width, scene.height))
 }
 
 /// The ray trees of `pixels` at stage `stage`, as [`grid_trees`] makes them.
-#[allow(unused_variables)]
-pub fn trees(stage: &str, scene: &Scene, pixels: &[(u32, u32)]) -> Option<Vec<crate::trees::TreeNode>> {
-    use crate::trees::{Kind, TreeNode};
-    let pixels = pixels.to_vec();
-    let row = self::stage(stage)?;
-    #[cfg(feature = "l08")]
-    if row.draws.traces() {
-        return Some(traced(stage, scene, &pixels)?.iter().map(|(_, tree)| tree.into()).collect());
+pub fn trees(stage: &str, scene: &Scene, pixels: &[(u32, u32)]) -> Option<Vec<TreeNode>> {
+    use crate::trees::Kind;
+    let row = self::stage(stage).filter(|_| built(stage))?;
+    let drawer = lent().drawer(row.draws);
+    if let Some(Drawer::Traces { traced, .. }) = drawer {
+        return Some(traced(scene, pixels)?.into_iter().map(|(_, tree)| tree).collect());
     }
-    #[cfg(feature = "l01")]
-    {
-        let camera = l01_transforms::Camera::from_scene(&scene.camera, scene.width, scene.height).ok()?;
-        let objects = if row.finds == Finds::Nothing { None } else { Some(intersector(stage, scene)?) };
-        let tree = |(x, y): (u32, u32)| {
-            let ray = camera.pixel_ray(x, y, scene.width, scene.height);
-            let hit = objects.as_ref().and_then(|o| o.closest_hit(&ray, raylab::Interval::POSITIVE));
-            #[allow(unused_mut)]
-            let mut children = Vec::new();
-            #[cfg(feature = "l07")]
-            if let (Some(hit), Draws::Mirrored) = (&hit, row.draws) {
-                for (k, direction, through) in sky_rays(scene, &ray, hit) {
-                    let kind = if through { Kind::Transmitted } else { Kind::Reflected };
-                    children.push(TreeNode::new(
-                        kind,
-                        hit.point,
-                        direction,
-                        k.max_element(),
-                        None,
-                        Vec::new(),
-                    ));
-                }
-            }
-            TreeNode::new(Kind::Eye, ray.origin, ray.dir, 1.0, hit.map(|h| (h.object, h.t)), children)
-        };
-        return Some(pixels.into_iter().map(tree).collect());
-    }
-    #[allow(unreachable_code)]
-    None
-}
-
-/// The colours and ray trees of `pixels` of `scene` at stage 08 or 10.
-#[cfg(feature = "l08")]
-fn traced(stage: &str, scene: &Scene, pixels: &[(u32, u32)]) -> Option<Vec<(Color, l08_ray_tree::RayTree)>> {
-    match self::stage(stage)?.draws {
-        #[cfg(feature = "complete")]
-        Draws::Complete => crate::tracer::pixel_trees(scene, pixels, &settings::scene_settings(scene)).ok(),
-        Draws::Whitted => {
-            let camera = l01_transforms::Camera::from_scene(&scene.camera, scene.width, scene.height).ok()?;
-            let objects = l04_quadrics_transforms::BruteForce::new(&scene.objects);
-            let world = l08_ray_tree::World::new(scene, &objects);
-            let settings = settings::scene_settings(scene);
-            let trace = |(x, y): (u32, u32)| {
-                l08_ray_tree::trace_recorded(
-                    &world,
-                    &camera.pixel_ray(x, y, scene.width, scene.height),
-                    &settings,
-                )
-            };
-            Some(pixels.iter().map(|&pixel| trace(pixel)).collect())
-        }
+    let sky_rays = match drawer {
+        Some(Drawer::Shades { sky_rays, .. }) => sky_rays,
         _ => None,
-    }
+    };
+    let rays = camera(scene)?.ok()?;
+    let objects = if row.finds == Finds::Nothing { None } else { Some(intersector(stage, scene)?) };
+    let tree = |&(x, y): &(u32, u32)| {
+        let ray = rays(x, y);
+        let hit = objects.as_ref().and_then(|o| o.closest_hit(&ray, raylab::Interval::POSITIVE));
+        let mut children = Vec::new();
+        if let (Some(hit), Some(sky_rays)) = (&hit, sky_rays) {
+            for (k, direction, through) in sky_rays(scene, &ray, hit) {
+                let kind = if through { Kind::Transmitted } else { Kind::Reflected };
+                children.push(TreeNode::new(kind, hit.point, direction, k.max_element(), None, Vec::new()));
+            }
+        }
+        TreeNode::new(Kind::Eye, ray.origin, ray.dir, 1.0, hit.map(|h| (h.object, h.t)), children)
+    };
+    Some(pixels.iter().map(tree).collect())
 }
 
 #[cfg(test)]
@@ -590,7 +565,6 @@ mod tests {
             assert!(stage(&file.lecture).is_some(), "lecture {} has scenes and no stage", file.lecture);
         }
         for row in STAGES {
-            assert!(built(row.lecture), "stage {} is not built with every lecture", row.lecture);
             assert!(needs(row.lecture).iter().all(|need| need[..2] < *row.lecture), "stage {}", row.lecture);
             // A stage that finds hits draws with the camera; one that draws the camera's rays alone
             // finds none.

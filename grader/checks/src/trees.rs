@@ -2,8 +2,6 @@
 //! trees of the report's grid of pixels in, the grid itself, and the tree's text. A leaf: the 3D
 //! view (`view3d`) draws these, the stages make them.
 
-#[cfg(feature = "l08")]
-use l08_ray_tree::{RayKind, RayTree};
 use raylab::{Float, Vec3};
 use serde::{Deserialize, Serialize};
 
@@ -130,20 +128,6 @@ impl std::fmt::Display for TreeNode {
     }
 }
 
-#[cfg(feature = "l08")]
-impl From<&RayTree> for TreeNode {
-    fn from(tree: &RayTree) -> Self {
-        let kind = match tree.kind {
-            RayKind::Eye => Kind::Eye,
-            RayKind::Shadow => Kind::Shadow,
-            RayKind::Reflected => Kind::Reflected,
-            RayKind::Transmitted => Kind::Transmitted,
-        };
-        let children = tree.children.iter().map(TreeNode::from).collect();
-        TreeNode::new(kind, tree.origin, tree.dir, tree.weight, tree.hit, children)
-    }
-}
-
 /// The grid of pixels whose trees the report holds: one pixel, the centre of each `GRID` × `GRID`
 /// block (a click in the report picks its block's; the view opens at a grid pixel that differs,
 /// `images::view_pixel`).
@@ -161,7 +145,7 @@ pub fn grid(width: u32, height: u32) -> Vec<(u32, u32)> {
     along(height).flat_map(|y| along(width).map(move |x| (x, y))).collect()
 }
 
-#[cfg(all(test, feature = "complete"))]
+#[cfg(test)]
 mod tests {
     use super::*;
 
@@ -184,51 +168,5 @@ mod tests {
         for &(x, y) in &pixels {
             assert_eq!(nearest((x, y), 200, 150), (x, y), "a grid pixel is its own block's");
         }
-    }
-
-    fn node(kind: RayKind, origin: Vec3, dir: Vec3, hit: Option<(usize, Float)>, weight: Float) -> RayTree {
-        RayTree { kind, origin, dir, hit, weight, children: Vec::new() }
-    }
-
-    /// A tree as data prints as lecture 08's `RayTree` prints: numbers rounded to three decimals
-    /// as printed (−0.0004 prints 0.000 either way, 2.0006 as 2.001), through JSON and back.
-    #[test]
-    fn a_tree_as_data_prints_as_the_tree() {
-        let mut tree = node(
-            RayKind::Eye,
-            Vec3::new(0.0, 2.2, 6.5),
-            Vec3::new(0.24744, -0.0004, -0.9689),
-            Some((2, 5.6096)),
-            1.0,
-        );
-        let mut inside =
-            node(RayKind::Transmitted, Vec3::new(1.38549, 1.0426, 1.1878), Vec3::Z, Some((2, 2.0006)), 0.9);
-        inside.children.push(node(RayKind::Shadow, Vec3::ONE, Vec3::X, Some((1, 0.836)), 0.9));
-        tree.children = vec![
-            node(RayKind::Shadow, Vec3::ONE, Vec3::Y, None, 1.0),
-            node(RayKind::Reflected, Vec3::ONE, -Vec3::Y, None, 0.1),
-            inside,
-        ];
-        let data = TreeNode::from(&tree);
-        assert_eq!(data.to_string(), tree.to_string());
-        let json = serde_json::to_string(&data).unwrap();
-        let back: TreeNode = serde_json::from_str(&json).unwrap();
-        assert_eq!(back, data);
-        assert!(tree.to_string().contains("hits #2 at t = 2.001"), "{tree}");
-        // A student's NaN direction and infinite t reach the report: null in JSON, NaN read back.
-        let broken =
-            node(RayKind::Eye, Vec3::ZERO, Vec3::new(Float::NAN, 0.0, -1.0), Some((0, Float::INFINITY)), 1.0);
-        let json = serde_json::to_string(&TreeNode::from(&broken)).unwrap();
-        assert_eq!(json, r#"{"k":"e","o":[0.0,0.0,0.0],"d":[null,0.0,-1.0],"w":1.0,"h":[0,null]}"#);
-        let back: TreeNode = serde_json::from_str(&json).unwrap();
-        assert_eq!(
-            back.to_string(),
-            "eye from (0.000, 0.000, 0.000) dir (NaN, 0.000, -1.000) weight 1.000: hits #0 at t = NaN\n"
-        );
-        // Empty fields are left out: a ray that misses and has no children is kind, origin, dir, weight.
-        assert_eq!(
-            serde_json::to_string(&data.c[1]).unwrap(),
-            r#"{"k":"r","o":[1.0,1.0,1.0],"d":[0.0,-1.0,0.0],"w":0.1}"#
-        );
     }
 }

@@ -18,11 +18,12 @@ fn bless_trees(file: &SceneFile, stage: &str, scene: &Scene) -> Result<(), Strin
 }
 
 /// Writes the reference's calls on the picture's path at the report's grid of pixels for `file`
-/// at `stage`, where the stage has calls ([`path::calls`]).
+/// at `stage`, where the stage has calls ([`stages::calls`]).
 #[cfg(feature = "complete")]
 fn bless_calls(file: &SceneFile, stage: &str, scene: &Scene) -> Result<(), String> {
     let pixels = crate::trees::grid(scene.width, scene.height);
-    let Some(calls) = pixels.iter().map(|&p| path::calls(stage, scene, p)).collect::<Option<Vec<_>>>() else {
+    let Some(calls) = pixels.iter().map(|&p| stages::calls(stage, scene, p)).collect::<Option<Vec<_>>>()
+    else {
         return Ok(());
     };
     let grid = path::GridCalls::new(scene.width, scene.height, calls);
@@ -36,7 +37,7 @@ fn bless_calls(file: &SceneFile, stage: &str, scene: &Scene) -> Result<(), Strin
 /// complete tracer (scenes of lectures 01–09), and the geometry images.
 #[cfg(feature = "complete")]
 pub fn bless(only: Option<&str>) -> Result<(), String> {
-    use crate::tracer::{Aov, render_scene, scene_sampling, scene_settings};
+    use crate::lectures::l10::tracer::{Aov, render_scene, scene_sampling, scene_settings};
     for file in scene_files(only)? {
         let scene = raylab::scene::load(&file.scene).map_err(|e| e.to_string())?;
         let settings = scene_settings(&scene);
@@ -74,6 +75,7 @@ mod tests {
     /// soft-shadows-sphere) — which the pictures' comparison tolerates in its thresholds.
     #[test]
     fn every_tree_stage_scene_has_its_current_blessed_trees() {
+        crate::lectures::install();
         /// `a` against `b` as JSON values: the same shape and keys, numbers equal in f32 (any in
         /// f64), a hit's object (`h`'s first number) equal in both.
         fn same(a: &serde_json::Value, b: &serde_json::Value, at: &str) -> Result<(), String> {

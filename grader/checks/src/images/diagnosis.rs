@@ -11,7 +11,7 @@ use crate::stages::{self, Draws};
 
 /// Where the student's calls at grid pixel `at` first differ from the blessed ones: the cause
 /// of a failed picture whose geometry matches; where every call agrees and the pixel there
-/// differs (`differs_there`), the pixel loop's ([`path::pixel_loop`]). `None` where the stage has
+/// differs (`differs_there`), the pixel loop's ([`stages::pixel_loop`]). `None` where the stage has
 /// no calls, the pixel is not the grid's, or nothing is named.
 pub(super) fn path_difference(
     file: &SceneFile,
@@ -29,7 +29,7 @@ pub(super) fn path_difference(
         Some((exercise, how)) => Some(format!(
             "at pixel ({x}, {y}), the first value on this picture's path that differs: {how}. Check {exercise}"
         )),
-        None => path::pixel_loop(stage, scene).filter(|_| differs_there).map(|exercise| {
+        None => stages::pixel_loop(stage, scene).filter(|_| differs_there).map(|exercise| {
             format!(
                 "at pixel ({x}, {y}) every exercise on this picture's path returns the reference's values, \
                  yet the pixel differs: check {exercise}, which makes the pixel from them"
@@ -181,21 +181,10 @@ pub(super) fn shading_diagnosis(
 
 /// The primary ray of each pixel of `scene`, row by row, from the student's camera when lecture 01
 /// is built.
-#[allow(unused_variables)]
 pub(super) fn camera_rays(scene: &Scene) -> Option<Vec<raylab::Ray>> {
-    #[cfg(feature = "l01")]
-    {
-        let camera = l01_transforms::Camera::from_scene(&scene.camera, scene.width, scene.height).ok()?;
-        let (w, h) = (scene.width, scene.height);
-        Some(
-            (0..h)
-                .flat_map(|y| (0..w).map(move |x| (x, y)))
-                .map(|(x, y)| camera.pixel_ray(x, y, w, h))
-                .collect(),
-        )
-    }
-    #[cfg(not(feature = "l01"))]
-    None
+    let rays = stages::camera(scene)?.ok()?;
+    let (w, h) = (scene.width, scene.height);
+    Some((0..h).flat_map(|y| (0..w).map(move |x| (x, y))).map(|(x, y)| rays(x, y)).collect())
 }
 
 fn luminance(c: Color) -> Float {
@@ -218,14 +207,8 @@ fn light_direction(light: &raylab::scene::Light, point: Vec3) -> Option<Vec3> {
 }
 
 /// The index of the object pixel (x, y) of an id image shows.
-#[allow(unused_variables)]
 fn object_at(id: &Image, x: u32, y: u32, scene: &Scene) -> Option<usize> {
-    #[cfg(feature = "l02")]
-    {
-        let pixel = raylab::color::to_srgb8(id.get(x, y));
-        return (0..scene.objects.len())
-            .find(|&i| raylab::color::to_srgb8(l02_ray_casting::id_color(Some(i))) == pixel);
-    }
-    #[allow(unreachable_code)]
-    None
+    let id_color = stages::geometry()?.id_color;
+    let pixel = raylab::color::to_srgb8(id.get(x, y));
+    (0..scene.objects.len()).find(|&i| raylab::color::to_srgb8(id_color(i)) == pixel)
 }

@@ -12,7 +12,7 @@ use super::no_snapshot;
 use crate::check::{CheckResult, Failure, fail};
 use crate::judge;
 use crate::scenes::SceneFile;
-use crate::stages;
+use crate::stages::{self, GeometryImage};
 
 /// Depth and normal tolerances of the geometry check: a pixel's depth
 /// differs when it is off by more than 10⁻³ relative (f32 and f64 agree to
@@ -23,29 +23,22 @@ const NORMAL_TOLERANCE: Float = 1e-3;
 
 /// The three geometry images of `scene` drawn with the intersections of the
 /// scene's lecture (its stage's `geometry`; see the module documentation).
-#[allow(unused_variables)]
 pub fn geometry_images(lecture: &str, scene: &Scene) -> Result<[Image; 3], String> {
-    #[cfg(feature = "l02")]
-    {
-        use l01_transforms::Camera;
-        use l02_ray_casting::{depth_image, normal_image, object_id_image};
-        let finds = stages::stage(lecture).map_or(stages::Finds::BruteForce, |s| s.geometry);
-        if let Some(objects) = stages::finder(finds, scene) {
-            let camera =
-                Camera::from_scene(&scene.camera, scene.width, scene.height).map_err(|e| e.to_string())?;
-            let (w, h, objects) = (scene.width, scene.height, objects.as_ref());
-            let answers = Answers::default();
-            let id = object_id_image(&camera, &Recorded { objects, answers: &answers }, w, h);
-            let answers = answers.0.into_inner().unwrap_or_default();
-            let replayed = || Replayed { objects, answers: &answers, next: AtomicUsize::new(0) };
-            return Ok([
-                id,
-                depth_image(&camera, &replayed(), w, h),
-                normal_image(&camera, &replayed(), w, h),
-            ]);
-        }
-    }
-    Err(format!("the intersections for lecture {lecture}'s scenes are not built"))
+    let finds = stages::stage(lecture).map_or(stages::Finds::BruteForce, |s| s.geometry);
+    let unbuilt = || format!("the intersections for lecture {lecture}'s scenes are not built");
+    let (Some(objects), Some(geometry)) = (stages::finder(finds, scene), stages::geometry()) else {
+        return Err(unbuilt());
+    };
+    let objects = objects.as_ref();
+    let answers = Answers::default();
+    let id = (geometry.image)(scene, GeometryImage::Id, &Recorded { objects, answers: &answers })?;
+    let answers = answers.0.into_inner().unwrap_or_default();
+    let replayed = || Replayed { objects, answers: &answers, next: AtomicUsize::new(0) };
+    Ok([
+        id,
+        (geometry.image)(scene, GeometryImage::Depth, &replayed())?,
+        (geometry.image)(scene, GeometryImage::Normal, &replayed())?,
+    ])
 }
 
 /// The answers of an intersector, in the order it gave them: the three geometry images cast the
@@ -229,10 +222,11 @@ fn describe_id(image: &Image, x: u32, y: u32, scene: &Scene) -> String {
     if pixel == [0, 0, 0] {
         return "none (background)".into();
     }
-    #[cfg(feature = "l02")]
-    for (index, object) in scene.objects.iter().enumerate() {
-        if raylab::color::to_srgb8(l02_ray_casting::id_color(Some(index))) == pixel {
-            return format!("#{index} ({})", object.shape.kind());
+    if let Some(geometry) = stages::geometry() {
+        for (index, object) in scene.objects.iter().enumerate() {
+            if raylab::color::to_srgb8((geometry.id_color)(index)) == pixel {
+                return format!("#{index} ({})", object.shape.kind());
+            }
         }
     }
     format!("with colour {pixel:?}")

@@ -14,7 +14,6 @@ use super::geometry::{geometry_difference, student_geometry};
 use super::{CHANNEL_THRESHOLD, FLIP_THRESHOLD, has_geometry_check, no_snapshot};
 use crate::check::{CheckResult, Failure, Images, fail};
 use crate::judge;
-use crate::path;
 use crate::scenes::{SceneFile, stage_snapshot, trees_snapshot};
 use crate::stages::{self, Draws};
 
@@ -99,7 +98,7 @@ pub(super) fn check_image(file: &SceneFile, stage: &str, dir: &Path) -> CheckRes
         let matches = judge::decide(|| matches!(geometry, Some(Ok(None))));
         // The student's eye rays, to find where the differing pixels' surfaces face the lights.
         let rays = if matches { judge::student(|| camera_rays(&scene)) } else { None };
-        let calls = if matches { judge::student(|| path::calls(stage, &scene, at)) } else { None };
+        let calls = if matches { judge::student(|| stages::calls(stage, &scene, at)) } else { None };
         judge::judge_only(|| match geometry {
             Some(Ok(Some(geometry))) => format!(
                 "the geometry differs already ({}: expected {}, got {}; {}): fix {} first",
@@ -327,6 +326,7 @@ mod tests {
     /// snapshot).
     #[test]
     fn the_report_s_view_of_a_failed_whitted_holds_the_grid_s_trees() {
+        crate::lectures::install();
         let file = scene_files(Some("08")).unwrap().into_iter().find(|f| f.name() == "whitted").unwrap();
         let scene = raylab::scene::load(&file.scene).unwrap();
         let dir =

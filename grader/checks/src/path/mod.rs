@@ -151,36 +151,29 @@ pub fn first_difference(expected: &[Call], yours: &[Call]) -> Option<(String, St
     None
 }
 
-/// The calls of stage `stage` at pixel `pixel` of `scene`; `None` at a stage without calls or
-/// whose code is not in this build.
+/// The calls `walk` makes into a trail (a stage's, at one pixel: `stages::calls`); `None` where
+/// it makes none.
 ///
 /// A call that panics (an exercise not started, or a bug) ends the calls there, recorded as a
 /// call of [`PANICKED`] with the panic's message: it is caught, and not the check's outcome (the
 /// panic hook lets it pass, [`probing`]), since the calls only explain a picture already failed.
-#[allow(unused_variables)]
-pub fn calls(stage: &str, scene: &raylab::Scene, pixel: (u32, u32)) -> Option<Vec<Call>> {
-    #[cfg(feature = "l05")]
-    if crate::stages::built(stage) {
-        let mut trail = Trail::default();
-        PROBING.set(true);
-        let walked = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
-            calls::calls(stage, scene, pixel, &mut trail)
-        }));
-        PROBING.set(false);
-        return match walked {
-            Ok(walked) => walked.map(|()| trail.0),
-            Err(payload) => {
-                let message = payload
-                    .downcast_ref::<&str>()
-                    .map(|s| (*s).to_owned())
-                    .or_else(|| payload.downcast_ref::<String>().cloned())
-                    .unwrap_or_else(|| "a panic without a message".to_owned());
-                trail.0.push(Call(PANICKED.to_owned(), message, Vec::new()));
-                Some(trail.0)
-            }
-        };
+pub fn record(walk: impl FnOnce(&mut Trail) -> Option<()>) -> Option<Vec<Call>> {
+    let mut trail = Trail::default();
+    PROBING.set(true);
+    let walked = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| walk(&mut trail)));
+    PROBING.set(false);
+    match walked {
+        Ok(walked) => walked.map(|()| trail.0),
+        Err(payload) => {
+            let message = payload
+                .downcast_ref::<&str>()
+                .map(|s| (*s).to_owned())
+                .or_else(|| payload.downcast_ref::<String>().cloned())
+                .unwrap_or_else(|| "a panic without a message".to_owned());
+            trail.0.push(Call(PANICKED.to_owned(), message, Vec::new()));
+            Some(trail.0)
+        }
     }
-    None
 }
 
 /// The exercise of the call that records a panic on the path: its `at` is the panic's message.
@@ -196,29 +189,13 @@ pub fn probing() -> bool {
     PROBING.get()
 }
 
-/// The exercise that makes a pixel of stage `stage` from the calls on its path, where that is a
-/// student's: lecture 08's `render` (one eye ray per pixel centre), or lecture 10's
-/// `render_supersampled` where the scene asks for several rays. A pixel that differs where every
-/// call agrees is that exercise's.
-#[allow(unused_variables)]
-pub fn pixel_loop(stage: &str, scene: &raylab::Scene) -> Option<&'static str> {
-    use crate::stages::Draws;
-    match crate::stages::stage(stage)?.draws {
-        Draws::Whitted => Some("08/render"),
-        #[cfg(feature = "complete")]
-        Draws::Complete if crate::tracer::scene_sampling(scene).spp > 1 => Some("10/render_supersampled"),
-        Draws::Complete => Some("08/render"),
-        _ => None,
-    }
-}
-
 /// Rounds to six significant digits, as the blessed files hold them (`+ 0.0`: no negative zero).
 fn rounded(x: f64) -> f64 {
     if x.is_finite() { format!("{x:.5e}").parse::<f64>().map_or(x, |r| r + 0.0) } else { f64::NAN }
 }
 
 /// What a call returns, as numbers.
-trait Numbers {
+pub trait Numbers {
     fn numbers(&self) -> Vec<f64>;
 }
 
@@ -265,18 +242,15 @@ impl<T: Numbers> Numbers for Option<T> {
 pub struct Trail(Vec<Call>);
 
 impl Trail {
-    fn push(&mut self, exercise: &str, at: impl Into<String>, value: &(impl Numbers + ?Sized)) {
+    /// Records a call of `exercise` (`05/lambert`), made `at` (`light 0`), that returned `value`.
+    pub fn push(&mut self, exercise: &str, at: impl Into<String>, value: &(impl Numbers + ?Sized)) {
         let values = value.numbers().into_iter().map(rounded).collect();
         self.0.push(Call(exercise.to_owned(), at.into(), values));
     }
 }
 
 /// At most this many samples of a pattern are recorded: enough to show their order and place.
-#[cfg(feature = "l06")]
-const SAMPLES_SHOWN: usize = 8;
-
-#[cfg(feature = "l05")]
-mod calls;
+pub const SAMPLES_SHOWN: usize = 8;
 
 #[cfg(test)]
 mod tests {
@@ -358,69 +332,5 @@ mod tests {
         assert_eq!(rounded(0.123_456_789), 0.123_457);
         assert_eq!(rounded(-123_456.789), -123_457.0);
         assert_eq!(rounded(-0.0).to_bits(), 0.0f64.to_bits());
-    }
-
-    /// Every scene, at each stage with calls, has its blessed calls, of its grid, and the
-    /// reference's calls today agree with them at every grid pixel by the comparison a failed
-    /// picture is explained with: the reference is never named. In f32, the precision they are
-    /// blessed in, and in f64 but for area-light samples drawn from another seed: 06's
-    /// `point_seed` hashes the hit point's cell, and a point within an ulp of a cell's wall
-    /// falls on the other side in the other precision.
-    #[cfg(feature = "complete")]
-    #[test]
-    fn the_reference_s_calls_agree_with_the_blessed_ones_at_every_grid_pixel() {
-        use crate::scenes::{calls_snapshot, scene_files};
-        use crate::stages;
-        let (mut files, mut pixels) = (0, 0);
-        let (mut wrong, mut reseeded) = (Vec::new(), Vec::new());
-        let f64_build = size_of::<raylab::Float>() == 8;
-        for file in scene_files(None).unwrap() {
-            let scene = raylab::scene::load(&file.scene).unwrap();
-            for stage in stages::drawing(&file) {
-                let path = calls_snapshot(&file, stage);
-                let has_calls = matches!(stage, "05" | "06" | "07" | "08" | "10");
-                let Ok(text) = std::fs::read_to_string(&path) else {
-                    assert!(!has_calls, "{}: missing (grader bless)", path.display());
-                    continue;
-                };
-                assert!(has_calls, "{}: a stage without calls", path.display());
-                let blessed: GridCalls = serde_json::from_str(&text).unwrap();
-                assert_eq!(
-                    (blessed.grid, blessed.width, blessed.height),
-                    (crate::trees::GRID, scene.width, scene.height)
-                );
-                let grid = crate::trees::grid(scene.width, scene.height);
-                assert_eq!(blessed.calls.len(), grid.len(), "{}", path.display());
-                for (index, &pixel) in grid.iter().enumerate() {
-                    let traced = calls(stage, &scene, pixel).unwrap();
-                    match first_difference(&blessed.pixel(index).unwrap(), &traced) {
-                        // In f64 a hit point can fall in another seed cell than f32's: another
-                        // stream of area-light samples from there on (see the test's note).
-                        Some((exercise, how)) if f64_build && exercise == "06/stratified" => {
-                            reseeded.push(format!("{} pixel {pixel:?}: {how}", path.display()));
-                        }
-                        Some((_, how)) => wrong.push(format!("{} pixel {pixel:?}: {how}", path.display())),
-                        None => {}
-                    }
-                    pixels += 1;
-                }
-                files += 1;
-            }
-        }
-        println!(
-            "{files} files, {pixels} pixels; in f64, reseeded area-light samples at:\n{}",
-            reseeded.join("\n")
-        );
-        // Measured: one pixel of 8565 (06's soft-shadows-sphere at (168, 88), at stages 06 and
-        // 10), where a failed picture's cause in an f64 build could name 06/stratified wrongly.
-        assert!(reseeded.len() <= 2, "{} pixels reseeded:\n{}", reseeded.len(), reseeded.join("\n"));
-        // Lectures 05–08's 24 scenes at their own stage, the 41 of lectures 01–09 and the 5 of 10 at stage 10.
-        assert_eq!(files, 24 + 41 + 5);
-        assert!(
-            wrong.is_empty(),
-            "{} pixels differ:\n{}",
-            wrong.len(),
-            wrong[..wrong.len().min(20)].join("\n")
-        );
     }
 }

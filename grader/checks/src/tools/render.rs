@@ -13,7 +13,7 @@ use l08_ray_tree::TraceSettings;
 use l10_textures_sampling::{Filter, Pattern};
 use raylab::{Float, Scene};
 
-use crate::tracer::{self as shade, Aov, Sampling};
+use crate::lectures::l10::tracer::{self as shade, Aov, Sampling};
 
 #[derive(clap::Args)]
 pub struct RenderArgs {
@@ -324,7 +324,7 @@ fn traced(args: &RenderArgs, scene: &Scene) -> Result<(), String> {
             let title =
                 format!("the ray tree of pixel ({}, {}) of {}", pixel.0, pixel.1, args.scene.display());
             let mut view = crate::view3d::View::new(scene, &title);
-            view.add_tree(scene, "yours", pixel, &(&tree).into());
+            view.add_tree(scene, "yours", pixel, &crate::lectures::l08::stage::tree_node(&tree));
             std::fs::write(file, view.to_html()?).map_err(|e| format!("{}: {e}", file.display()))?;
         }
     }

@@ -78,6 +78,9 @@ mod screen;
 #[cfg(feature = "l01")]
 mod transforms;
 
+#[cfg(feature = "l01")]
+pub mod stage;
+
 /// What the rows above run: the checks of each of the lecture's files.
 #[cfg(feature = "l01")]
 mod code {

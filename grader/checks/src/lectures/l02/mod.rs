@@ -51,6 +51,9 @@ mod plane;
 #[cfg(feature = "l02")]
 mod sphere;
 
+#[cfg(feature = "l02")]
+pub mod stage;
+
 /// What the rows above run: the checks of each of the lecture's files.
 #[cfg(feature = "l02")]
 mod code {

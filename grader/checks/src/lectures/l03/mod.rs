@@ -85,6 +85,9 @@ mod slabs;
 #[cfg(feature = "l03")]
 mod triangle;
 
+#[cfg(feature = "l03")]
+pub mod stage;
+
 /// What the rows above run: the checks of each of the lecture's files.
 #[cfg(feature = "l03")]
 mod code {

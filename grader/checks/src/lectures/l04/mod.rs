@@ -71,6 +71,9 @@ mod parametric;
 #[cfg(feature = "l04")]
 mod transformed;
 
+#[cfg(feature = "l04")]
+pub mod stage;
+
 /// What the rows above run: the checks of each of the lecture's files.
 #[cfg(feature = "l04")]
 mod code {

@@ -65,6 +65,9 @@ mod reflect;
 #[cfg(feature = "l05")]
 mod shade;
 
+#[cfg(feature = "l05")]
+pub mod stage;
+
 /// What the rows above run: the checks of each of the lecture's files.
 #[cfg(feature = "l05")]
 mod code {

@@ -61,6 +61,9 @@ mod shade;
 #[cfg(feature = "l06")]
 mod soft;
 
+#[cfg(feature = "l06")]
+pub mod stage;
+
 /// What the rows above run: the checks of each of the lecture's files.
 #[cfg(feature = "l06")]
 mod code {

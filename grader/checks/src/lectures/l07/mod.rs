@@ -43,6 +43,9 @@ mod mirror;
 #[cfg(feature = "l07")]
 mod refract;
 
+#[cfg(feature = "l07")]
+pub mod stage;
+
 /// What the rows above run: the checks of each of the lecture's files.
 #[cfg(feature = "l07")]
 mod code {

@@ -49,6 +49,9 @@ mod render;
 #[cfg(feature = "l08")]
 mod trace;
 
+#[cfg(feature = "l08")]
+pub mod stage;
+
 /// What the rows above run: the checks of each of the lecture's files.
 #[cfg(feature = "l08")]
 mod code {

@@ -80,6 +80,9 @@ mod sah;
 #[cfg(feature = "l09")]
 mod traverse;
 
+#[cfg(feature = "l09")]
+pub mod stage;
+
 /// What the rows above run: the checks of each of the lecture's files.
 #[cfg(feature = "l09")]
 mod code {

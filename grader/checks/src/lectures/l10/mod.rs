@@ -75,6 +75,11 @@ mod supersample;
 #[cfg(feature = "l10")]
 mod uv;
 
+#[cfg(feature = "l10")]
+pub mod stage;
+#[cfg(feature = "l10")]
+pub mod tracer;
+
 /// What the rows above run: the checks of each of the lecture's files.
 #[cfg(feature = "l10")]
 mod code {

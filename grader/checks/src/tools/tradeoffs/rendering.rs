@@ -12,7 +12,7 @@ use raylab::{Float, Image, Intersector, Scene};
 
 use super::row::{Pair, Row, own_precision};
 use super::timing::{Effort, Timing, time_per_item};
-use crate::tracer::{Sampling, render_scene, scene_settings};
+use crate::lectures::l10::tracer::{Sampling, render_scene, scene_settings};
 
 /// The scene of the spp sweep: a checker receding to the horizon, the lecture's aliasing case.
 pub const SPP_SCENE: &str = "lectures/10-textures-sampling/scenes/checker-aliasing-1spp.toml";

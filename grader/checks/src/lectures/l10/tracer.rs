@@ -20,7 +20,7 @@ pub enum Aov {
     Normal,
 }
 
-pub use crate::settings::scene_settings;
+pub use crate::lectures::l08::stage::scene_settings;
 
 /// How many eye rays each pixel gets, where, and how they are weighted
 /// (lecture 10). One ray is the pixel centre, as lecture 08 renders.
