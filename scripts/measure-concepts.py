@@ -3,12 +3,12 @@
 
     python3 scripts/measure-concepts.py
 
-Prints, for grader/src and grader/checks/src, code outside tests (a file's tests start at its
+Prints, for grader/src, grader/checks/src and grader/checks/core/src, code outside tests (a file's tests start at its
 first `#[cfg(test)]` at the start of a line; files named `*tests.rs` are all tests):
   - lecture-number literals ("01" … "99" as a whole string literal), outside the lectures' own
-    check folders (grader/checks/src/lectures/lNN/), per file;
+    check crates (grader/checks/lectures/lNN/), per file;
   - files under grader/ over 700 lines;
-  - import circles among grader/checks/src's top-level modules: groups of modules that use each
+  - import circles among the checks' core's top-level modules (grader/checks/core/src): groups of modules that use each
     other, directly or through others (`crate::m` or `super::m` paths, and `mod` children's uses
     counted as their parent's), tests included, since a circle through a test still ties the files.
 """
@@ -42,11 +42,9 @@ def relative(path):
 
 def literals():
     total, per = 0, []
-    for folder in ["grader/src", "grader/checks/src"]:
+    for folder in ["grader/src", "grader/checks/src", "grader/checks/core/src"]:
         for path in rust_files(folder):
             rel = relative(path)
-            if re.match(r"grader/checks/src/lectures/l\d\d/", rel):
-                continue
             n = len(LITERAL.findall(code_of(path)))
             if n:
                 per.append((n, rel))
@@ -64,13 +62,13 @@ def long_files():
 
 
 def circles():
-    src = os.path.join(ROOT, "grader/checks/src")
+    src = os.path.join(ROOT, "grader/checks/core/src")
     modules = {}
-    for path in rust_files("grader/checks/src"):
+    for path in rust_files("grader/checks/core/src"):
         rel = os.path.relpath(path, src)
         top = rel.split(os.sep)[0]
         top = top[:-3] if top.endswith(".rs") else top
-        if top == "main":
+        if top == "lib":
             continue
         uses = modules.setdefault(top, set())
         text = open(path, encoding="utf-8").read()
@@ -126,7 +124,7 @@ def main():
     for n, rel in files:
         print(f"  {n:5}  {rel}")
     groups = circles()
-    print(f"import circles among grader/checks/src's modules: {len(groups)}")
+    print(f"import circles among grader/checks/core/src's modules: {len(groups)}")
     for group in groups:
         print("  " + " ↔ ".join(group))
 

@@ -139,10 +139,8 @@ pub fn build(ws: &Workspace, options: &BuildOptions) -> Result<Built, String> {
 fn blame(ws: &Workspace, errors: &[Located]) -> BTreeMap<String, CompileError> {
     let mut blamed = BTreeMap::new();
     for located in errors {
-        let lecture = match &located.package {
-            package if package == "raylab-checks" => checks_file_lecture(&located.error.location),
-            package => ws.by_package(package).map(|l| l.number.clone()),
-        };
+        let package = &located.package;
+        let lecture = checks_lecture(package).or_else(|| ws.by_package(package).map(|l| l.number.clone()));
         if let Some(lecture) = lecture {
             blamed.entry(lecture).or_insert_with(|| located.error.clone());
         }
@@ -150,13 +148,11 @@ fn blame(ws: &Workspace, errors: &[Located]) -> BTreeMap<String, CompileError> {
     blamed
 }
 
-/// `07` for an error in `grader/checks/src/lectures/l07.rs`.
-fn checks_file_lecture(location: &str) -> Option<String> {
-    let file = location.split(':').next()?;
-    let name = Path::new(file).file_stem()?.to_str()?;
-    let number = name.strip_prefix('l')?;
-    (file.contains("lectures/") && number.len() == 2 && number.chars().all(|c| c.is_ascii_digit()))
-        .then(|| number.to_owned())
+/// `07` for an error in lecture 07's checks crate (`raylab-checks-l07`, `grader/checks/lectures/l07`):
+/// what it checks changed under it, so the lecture is set aside with it.
+fn checks_lecture(package: &str) -> Option<String> {
+    let number = package.strip_prefix("raylab-checks-l")?;
+    (number.len() == 2 && number.chars().all(|c| c.is_ascii_digit())).then(|| number.to_owned())
 }
 
 /// An error and the package it is in.
@@ -359,9 +355,11 @@ mod tests {
     }
 
     #[test]
-    fn an_error_in_a_lectures_checks_file_is_that_lectures() {
-        assert_eq!(checks_file_lecture("grader/checks/src/lectures/l07.rs:12:5"), Some("07".into()));
-        assert_eq!(checks_file_lecture("grader/checks/src/images.rs:12:5"), None);
+    fn an_error_in_a_lectures_checks_crate_is_that_lectures() {
+        assert_eq!(checks_lecture("raylab-checks-l07"), Some("07".into()));
+        assert_eq!(checks_lecture("raylab-checks-core"), None);
+        assert_eq!(checks_lecture("raylab-checks"), None);
+        assert_eq!(checks_lecture("l07-reflection-refraction"), None);
     }
 
     #[test]

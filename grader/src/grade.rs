@@ -143,7 +143,7 @@ pub fn grade(ws: &Workspace, options: &GradeOptions) -> Result<Grade, String> {
                 // of its week: the course's week test renders each week's scenes with it.
                 tools: submission,
                 // Graded with a judge, the hidden checks are the judge's alone: the student's build
-                // has neither their code nor their answers (`raylab-checks/src/remote.rs`).
+                // has neither their code nor their answers (`grader/checks/core/src/remote.rs`).
                 hidden: options.hidden && !submission,
                 release: options.release,
                 f64: options.f64,

@@ -44,9 +44,9 @@ const LEFT_OUT: &[&str] = &[
     STUDENT_README,
 ];
 
-/// The checks' sources: their tests (planted mistakes, some of them the
-/// reference with a switch) stay out of the handout.
-const CHECKS_SOURCE: &str = "grader/checks/src/";
+/// The checks' sources (the binary's, the core's and each lecture's checks crate's): their tests
+/// (planted mistakes, some of them the reference with a switch) stay out of the handout.
+const CHECKS_SOURCE: &str = "grader/checks/";
 
 /// The student's `README.md`, kept in the instructors' tree under this name.
 const STUDENT_README: &str = "grader/STUDENT-README.md";

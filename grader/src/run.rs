@@ -60,7 +60,7 @@ pub fn run_check(
 /// code, only the check's own (an image comparison at most).
 const JUDGE_GRACE: Duration = Duration::from_secs(60);
 
-/// Runs a judged check (`raylab-checks/src/judge.rs`): `judge ID` from the
+/// Runs a judged check (`grader/checks/core/src/judge.rs`): `judge ID` from the
 /// `judge` binary, which runs no student code and prints the verdict, and
 /// `run ID --channel ADDR` (a hidden check: `serve --channel ADDR`) from
 /// `subject`, the student's build, under the time limit and output caps. The

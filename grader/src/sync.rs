@@ -20,17 +20,40 @@ pub const COMMAND: &str = "cargo run -p grader -- dev sync";
 
 /// One generated region: the file (relative to the root), its name, its lines.
 struct Region {
-    file: &'static str,
+    file: String,
     name: &'static str,
     text: String,
+}
+
+/// Lecture `l`'s checks crate: its folder, relative to the root.
+pub fn checks_crate(l: &Lecture) -> String {
+    format!("grader/checks/lectures/l{}", l.number)
+}
+
+/// The manifest `grader dev sync` writes for a lecture's checks crate that has none (a new
+/// lecture's): the package, and the regions it fills; the rest is the instructors' to edit.
+fn checks_manifest(l: &Lecture) -> String {
+    let n = &l.number;
+    format!(
+        "[package]\nname = \"raylab-checks-l{n}\"\nversion = \"0.1.0\"\n\
+         description = \"Lecture {n}'s checks, and the code it lends the stages.\"\n\
+         edition.workspace = true\nrust-version.workspace = true\nlicense.workspace = true\n\
+         publish.workspace = true\n\n\
+         # `l{n}`: the checks' code, with the lecture and the checks of the lectures it uses; without it\n\
+         # (the grader's build where the lecture does not compile) their declarations alone.\n\
+         [features]\ndefault = [\"l{n}\"]\n# BEGIN GENERATED features:\n# END GENERATED features\n\n\
+         [dependencies]\nraylab.workspace = true\nraylab-checks-core.workspace = true\n\
+         raylab-testing.workspace = true\nserde.workspace = true\nserde_json.workspace = true\n\
+         # BEGIN GENERATED dependencies:\n# END GENERATED dependencies\n\n[lints]\nworkspace = true\n"
+    )
 }
 
 /// Every region's text, from the manifest.
 fn regions(ws: &Workspace) -> Vec<Region> {
     let lectures = &ws.lectures;
-    let region = |file, name, text: String| Region { file, name, text };
+    let region = |file: &str, name, text: String| Region { file: file.to_owned(), name, text };
     let feature = |l: &Lecture| format!("l{}", l.number);
-    vec![
+    let mut regions = vec![
         region(
             "grader/checks/Cargo.toml",
             "features",
@@ -42,9 +65,16 @@ fn regions(ws: &Workspace) -> Vec<Region> {
                 )))
                 .chain(lectures.iter().map(|l| {
                     let mut enables: Vec<String> = l.uses.iter().map(|n| format!("l{n}")).collect();
-                    enables.push(format!("dep:{}", l.package));
+                    enables.push(format!("raylab-checks-l{0}/l{0}", l.number));
                     format!("{} = [{}]\n", feature(l), quoted(enables))
                 }))
+                .chain(std::iter::once(format!(
+                    "# The tools on the complete tracer (`render`, `bless`, `bench-rays`, and the instructors'\n\
+                     # `tradeoffs`): `grader render` and the others build them, and so does a submission's build\n\
+                     # (made once); a local grade does not, so that the binary a student's edit relinks holds\n\
+                     # only what grades.\ntools = [\"complete\", \"dep:plotters\", {}]\n",
+                    quoted(lectures.iter().map(|l| format!("dep:{}", l.package)))
+                )))
                 .collect(),
         ),
         region(
@@ -52,15 +82,16 @@ fn regions(ws: &Workspace) -> Vec<Region> {
             "dependencies",
             lectures
                 .iter()
-                .map(|l| {
+                .map(|l| format!("raylab-checks-l{0} = {{ path = \"lectures/l{0}\", default-features = false }}\n", l.number))
+                .chain(lectures.iter().map(|l| {
                     format!("{} = {{ path = \"../../lectures/{}\", optional = true }}\n", l.package, l.folder)
-                })
+                }))
                 .collect(),
         ),
         region(
             "grader/checks/src/lectures/mod.rs",
             "modules",
-            lectures.iter().map(|l| format!("pub mod l{};\n", l.number)).collect(),
+            lectures.iter().map(|l| format!("pub use raylab_checks_l{0} as l{0};\n", l.number)).collect(),
         ),
         region(
             "grader/checks/src/lectures/mod.rs",
@@ -70,6 +101,25 @@ fn regions(ws: &Workspace) -> Vec<Region> {
                 .map(|l| {
                     let n = &l.number;
                     format!("        lecture!(\"{n}\", l{n}, \"l{n}\"),\n")
+                })
+                .collect(),
+        ),
+        region(
+            "Cargo.toml",
+            "checks-members",
+            lectures.iter().map(|l| format!("    \"{}\",\n", checks_crate(l))).collect(),
+        ),
+        region(
+            "Cargo.toml",
+            "checks-profiles",
+            lectures
+                .iter()
+                .map(|l| {
+                    format!(
+                        "[profile.dev.package.raylab-checks-l{}]\nopt-level = 0\ndebug = \"line-tables-only\"\n\
+                         codegen-units = 16\n",
+                        l.number
+                    )
                 })
                 .collect(),
         ),
@@ -130,7 +180,36 @@ fn regions(ws: &Workspace) -> Vec<Region> {
                 }))
                 .collect(),
         ),
-    ]
+    ];
+    // Each lecture's checks crate: with its feature, the lecture and every lecture it uses, directly
+    // or not, and their checks (a stage draws with the earlier stages' code).
+    for l in lectures {
+        let used: Vec<&Lecture> = ws
+            .prerequisites(&l.number)
+            .iter()
+            .filter(|n| **n != l.number)
+            .filter_map(|n| ws.lecture(n))
+            .collect();
+        let file = format!("{}/Cargo.toml", checks_crate(l));
+        let mut enables = vec![format!("dep:{}", l.package)];
+        enables.extend(used.iter().map(|u| format!("dep:{}", u.package)));
+        enables.extend(used.iter().map(|u| format!("raylab-checks-l{0}/l{0}", u.number)));
+        regions.push(region(&file, "features", format!("l{} = [{}]\n", l.number, quoted(enables))));
+        let lecture = |u: &Lecture| {
+            format!("{} = {{ path = \"../../../../lectures/{}\", optional = true }}\n", u.package, u.folder)
+        };
+        let dependencies = std::iter::once(lecture(l))
+            .chain(used.iter().map(|u| lecture(u)))
+            .chain(used.iter().map(|u| {
+                format!(
+                    "raylab-checks-l{0} = {{ path = \"../l{0}\", optional = true, default-features = false }}\n",
+                    u.number
+                )
+            }))
+            .collect();
+        regions.push(region(&file, "dependencies", dependencies));
+    }
+    regions
 }
 
 /// The chapter's number as the book writes it: `7`, `10`.
@@ -183,7 +262,7 @@ fn replace_region(file: &str, text: &str, name: &str, lines: &str) -> Result<Str
 
 /// A file whose generated regions differ from the manifest.
 struct Stale {
-    file: &'static str,
+    file: String,
     /// The regions that differ.
     regions: Vec<&'static str>,
     /// The file with every region rewritten.
@@ -195,12 +274,20 @@ fn stale(ws: &Workspace) -> Result<Vec<Stale>, String> {
     let mut files: Vec<(Stale, String)> = Vec::new();
     for region in regions(ws) {
         if !files.iter().any(|(f, _)| f.file == region.file) {
-            let path = ws.root.join(region.file);
-            let text = std::fs::read_to_string(&path).map_err(|e| format!("{}: {e}", path.display()))?;
-            files.push((Stale { file: region.file, regions: Vec::new(), text: text.clone() }, text));
+            let path = ws.root.join(&region.file);
+            // A new lecture's checks crate gets its manifest written, regions and all.
+            let new = ws.lectures.iter().find(|l| region.file == format!("{}/Cargo.toml", checks_crate(l)));
+            let (text, old) = match (std::fs::read_to_string(&path), new) {
+                (Ok(text), _) => (text.clone(), text),
+                (Err(e), Some(l)) if e.kind() == std::io::ErrorKind::NotFound => {
+                    (checks_manifest(l), String::new())
+                }
+                (Err(e), _) => return Err(format!("{}: {e}", path.display())),
+            };
+            files.push((Stale { file: region.file.clone(), regions: Vec::new(), text }, old));
         }
         let (file, _) = files.iter_mut().find(|(f, _)| f.file == region.file).expect("pushed above");
-        let text = replace_region(region.file, &file.text, region.name, &region.text)?;
+        let text = replace_region(&region.file, &file.text, region.name, &region.text)?;
         if text != file.text {
             file.regions.push(region.name);
             file.text = text;
@@ -219,6 +306,9 @@ pub fn sync(root: &Path, check: bool) -> Result<bool, String> {
             eprintln!("{file}: stale: {}", regions.join(", "));
         } else {
             let path = root.join(file);
+            if let Some(parent) = path.parent() {
+                std::fs::create_dir_all(parent).map_err(|e| format!("{}: {e}", parent.display()))?;
+            }
             std::fs::write(&path, text).map_err(|e| format!("{}: {e}", path.display()))?;
             println!("{file}: rewrote {}", regions.join(", "));
         }

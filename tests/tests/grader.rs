@@ -770,7 +770,7 @@ fn the_gradescope_bundle_has_its_scripts_and_the_pristine_workspace() {
 }
 
 /// The recipe of ARCHITECTURE.md ("Adding a lecture"), followed in a copy of the tree: a
-/// scratch lecture 11 (its crate, its checks file, its chapter) and `grader dev sync`, no
+/// scratch lecture 11 (its crate, its checks crate's source, its chapter) and `grader dev sync`, no
 /// other file edited by hand. The grader then lists and passes its check, the handout stubs
 /// its exercise, and the book's checks (the exercise tables, the `Book: §` references, the
 /// generated lists) pass with its chapter in SUMMARY.md.
@@ -786,7 +786,7 @@ fn a_lecture_added_by_the_recipe_alone_is_graded_handed_out_and_in_the_book() {
         ("lectures/11-scratch/src/lib.rs", RECIPE_LIB),
         ("lectures/11-scratch/README.md", RECIPE_README),
         ("lectures/11-scratch/hints.toml", "twice = [\"Scale it.\", \"By 2: v * 2.0.\"]\n"),
-        ("grader/checks/src/lectures/l11.rs", RECIPE_CHECKS),
+        ("grader/checks/lectures/l11/src/lib.rs", RECIPE_CHECKS),
         ("book/src/11-scratch.md", RECIPE_CHAPTER),
     ];
     for (path, text) in added {
@@ -810,12 +810,14 @@ fn a_lecture_added_by_the_recipe_alone_is_graded_handed_out_and_in_the_book() {
     assert_eq!(
         written,
         [
+            "Cargo.toml",
             "README.md",
             "book/doctests/Cargo.toml",
             "book/doctests/src/lib.rs",
             "book/src/SUMMARY.md",
             "book/src/introduction.md",
             "grader/checks/Cargo.toml",
+            "grader/checks/lectures/l11/Cargo.toml",
             "grader/checks/src/lectures/mod.rs",
         ]
         .iter()
@@ -927,6 +929,10 @@ const RECIPE_README: &str = "# Lecture 11 — a scratch lecture
 
 const RECIPE_CHECKS: &str = r#"//! Lecture 11, a scratch lecture: twice a vector.
 
+#![cfg_attr(not(feature = "l11"), allow(unused))]
+
+use raylab_checks_core::{check, declare_checks};
+
 use crate::check::Meta;
 
 declare_checks! {
@@ -944,6 +950,12 @@ mod code {
         ensure(got == Vec3::new(2.0, 4.0, 6.0), "(1, 2, 3)", "(2, 4, 6)", got, "scale by two")?;
         Ok("1 case".into())
     }
+}
+
+/// What the lecture lends the stages: nothing, it has no pictures.
+#[cfg(feature = "l11")]
+pub mod stage {
+    pub fn lend(_: &mut raylab_checks_core::stages::Lent) {}
 }
 "#;
 

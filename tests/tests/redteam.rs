@@ -4,7 +4,7 @@
 //! plain verdict ("failed" or "crashed", never "passed"), and leave every
 //! other check's verdict as the reference's.
 //!
-//! Every check of a submission is judged (`grader/checks/src/judge.rs`): the
+//! Every check of a submission is judged (`grader/checks/core/src/judge.rs`): the
 //! process that runs the student's code reports values and never a verdict,
 //! and what only the judge may read (the snapshots, the hidden checks) is not
 //! in the tree where the student's code is built and run.
@@ -140,7 +140,7 @@ fn files_outside_the_lectures_sources_change_nothing() {
         .unwrap();
     std::fs::create_dir_all(lecture.join("extra")).unwrap();
     std::fs::write(lecture.join("extra/forged.rs"), "compile_error!(\"a file beside src/\");\n").unwrap();
-    let checks_file = dir.join("grader/checks/src/lectures/l02/mod.rs");
+    let checks_file = dir.join("grader/checks/lectures/l02/src/lib.rs");
     std::fs::create_dir_all(checks_file.parent().unwrap()).unwrap();
     std::fs::write(&checks_file, "compile_error!(\"the grader's checks, replaced\");\n").unwrap();
     let (grade, stderr) = grade_submission(&dir, &["02"], "outside.json");

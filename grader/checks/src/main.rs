@@ -18,20 +18,12 @@
 // that is expected and not worth a warning in the student's terminal.
 #![cfg_attr(not(feature = "tools"), allow(unused))]
 
-mod check;
-mod images;
-mod judge;
 mod lectures;
-mod path;
-mod platform;
-mod remote;
-mod rows;
-mod scenes;
-mod stages;
 #[cfg(feature = "tools")]
 mod tools;
-mod trees;
-mod view3d;
+
+// The core's modules, where this crate's code (and the tools') has always named them.
+use raylab_checks_core::{check, images, judge, path, platform, remote, scenes, stages, trees, view3d};
 
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -150,7 +142,7 @@ fn main() -> ExitCode {
         #[cfg(feature = "tools")]
         Command::Render(args) => tools::render::render(&args).map(|()| ExitCode::SUCCESS),
         #[cfg(feature = "tools")]
-        Command::Bless { lecture } => images::bless(lecture.as_deref()).map(|()| ExitCode::SUCCESS),
+        Command::Bless { lecture } => tools::bless::bless(lecture.as_deref()).map(|()| ExitCode::SUCCESS),
         #[cfg(feature = "tools")]
         Command::BenchRays(args) => tools::bench::bench_rays(&args).map(|()| ExitCode::SUCCESS),
         // INSTRUCTOR BEGIN

@@ -6,7 +6,7 @@
 //! A lecture's verdicts depend on its own checks and those of the lectures it uses, nothing later
 //! (ARCHITECTURE.md: a lecture's checks need that lecture and earlier ones). So the tree is
 //! hashed in parts ([`JudgePrint`]): per lecture, its folder (scenes, snapshots, stubs) and its
-//! checks' module (`grader/checks/src/lectures/lNN/`); and in common, what every verdict may
+//! checks' crate (`grader/checks/lectures/lNN/`, with the code it lends the stages); and in common, what every verdict may
 //! depend on — the workspace's manifest and lock file, the kit, the protocol, the checks' shared
 //! code and hidden checks, the driver that turns a check's end into a verdict, and the build's
 //! precision and profile. A change in common grades everything again; a change in lecture NN
@@ -39,9 +39,7 @@ fn part(ws: &Workspace, relative: &str) -> Option<Option<String>> {
         ["lectures", folder, _, ..] => {
             Some(Some(ws.lectures.iter().find(|l| l.folder == *folder)?.number.clone()))
         }
-        ["grader", "checks", "src", "lectures", module, _, ..]
-            if module.len() == 3 && module.starts_with('l') =>
-        {
+        ["grader", "checks", "lectures", module, _, ..] if module.len() == 3 && module.starts_with('l') => {
             Some(Some(module[1..].to_owned()))
         }
         ["grader", "src", "class", ..] => None,
@@ -151,7 +149,7 @@ mod tests {
         write("crates/raylab/src/lib.rs", "// the kit");
         write("book/src/intro.md", "# the book");
         write("grader/src/class/mod.rs", "// grader class");
-        write("grader/checks/src/images/mod.rs", "// shared checks");
+        write("grader/checks/core/src/images/mod.rs", "// shared checks");
         for (folder, package, uses) in
             [("01-a", "l01-a", ""), ("02-b", "l02-b", "l01-a"), ("03-c", "l03-c", "")]
         {
@@ -166,7 +164,7 @@ mod tests {
             );
             write(&format!("lectures/{folder}/src/lib.rs"), "");
             write(&format!("lectures/{folder}/snapshots/s.png"), "png");
-            write(&format!("grader/checks/src/lectures/l{}/mod.rs", &folder[..2]), "// checks");
+            write(&format!("grader/checks/lectures/l{}/src/lib.rs", &folder[..2]), "// checks");
         }
         Workspace::open(root).unwrap()
     }
@@ -187,7 +185,7 @@ mod tests {
         std::fs::write(root.join("target/debug/x"), "built").unwrap();
         assert_eq!(stale_lectures(&ws, &before, &print(&ws)), set(&[]));
         // Lecture 01's checks: 01 and 02, which uses it.
-        std::fs::write(root.join("grader/checks/src/lectures/l01/mod.rs"), "// fixed").unwrap();
+        std::fs::write(root.join("grader/checks/lectures/l01/src/lib.rs"), "// fixed").unwrap();
         assert_eq!(stale_lectures(&ws, &before, &print(&ws)), set(&["01", "02"]));
         // Lecture 03's snapshot, blessed again: 03 alone.
         let before = print(&ws);
@@ -195,7 +193,7 @@ mod tests {
         assert_eq!(stale_lectures(&ws, &before, &print(&ws)), set(&["03"]));
         // The checks' shared code, the kit, the precision: everything.
         let before = print(&ws);
-        std::fs::write(root.join("grader/checks/src/images/mod.rs"), "// fixed").unwrap();
+        std::fs::write(root.join("grader/checks/core/src/images/mod.rs"), "// fixed").unwrap();
         assert_eq!(stale_lectures(&ws, &before, &print(&ws)), None);
         let before = print(&ws);
         assert_eq!(stale_lectures(&ws, &before, &judge_print(&ws, "f64 debug").unwrap()), None);

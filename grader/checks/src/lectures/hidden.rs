@@ -19,7 +19,7 @@ pub fn lectures() -> Vec<Lecture> {
 mod h01 {
     use crate::check::Meta;
 
-    declare_checks! {
+    raylab_checks_core::declare_checks! {
         "l01", judged;
         Meta::unit("rotate_z", "a quarter turn about z takes x to y, counter-clockwise seen from +z")
         .named_hidden("hidden-quarter-turn") => hidden(),
@@ -47,7 +47,7 @@ mod h01 {
 mod h02 {
     use crate::check::Meta;
 
-    declare_checks! {
+    raylab_checks_core::declare_checks! {
             "l02", judged;
             Meta::unit(
         "hit_sphere_stable",
@@ -90,7 +90,7 @@ mod h02 {
 mod h03 {
     use crate::check::Meta;
 
-    declare_checks! {
+    raylab_checks_core::declare_checks! {
         "l03", judged;
         Meta::unit("hit_slabs", "a ray along +z through an off-origin box: enter and exit t by hand")
         .named_hidden("hidden-off-origin-box") => hidden(),
@@ -132,7 +132,7 @@ mod h03 {
 mod h05 {
     use crate::check::Meta;
 
-    declare_checks! {
+    raylab_checks_core::declare_checks! {
         "l05", judged;
         Meta::unit("lambert", "a 3-4-5 direction to the light, and the same light behind the surface")
         .named_hidden("hidden-3-4-5") => hidden(),
@@ -159,7 +159,7 @@ mod h05 {
 mod h07 {
     use crate::check::Meta;
 
-    declare_checks! {
+    raylab_checks_core::declare_checks! {
         "l07", judged;
         Meta::unit("refract", "refraction into glass at 30° and back out, against Snell's law by hand")
         .named_hidden("hidden-snell-both-ways") => hidden(),
@@ -205,7 +205,7 @@ mod h07 {
 mod h09 {
     use crate::check::Meta;
 
-    declare_checks! {
+    raylab_checks_core::declare_checks! {
         "l09", judged;
         Meta::unit("Aabb::surface_area", "a 1 × 2 × 3 box away from the origin: 22 by hand")
     .named_hidden("hidden-1-2-3-box") => hidden(),

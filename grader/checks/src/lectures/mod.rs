@@ -11,37 +11,6 @@
 use crate::check::{CheckResult, Info, Meta};
 use crate::stages::Lent;
 
-/// A lecture's checks, each declared once: its [`Meta`] and the expression
-/// that runs it, evaluated among the items of the lecture's `code` module
-/// (those the expressions name are `pub(super)` there). Yields `CHECKS`
-/// (always compiled: the grader lists a lecture's checks, with their points,
-/// even when the lecture does not compile) and, with the lecture's feature,
-/// `run`, which runs the row whose `exercise/name` is asked.
-macro_rules! declare_checks {
-    // `judged`: every check below takes the student's values through `judge::student`.
-    ($feature:literal, judged; $($meta:expr => $run:expr),+ $(,)?) => {
-        declare_checks!(@ $feature, true; $($meta => $run),+);
-    };
-    ($feature:literal; $($meta:expr => $run:expr),+ $(,)?) => {
-        declare_checks!(@ $feature, false; $($meta => $run),+);
-    };
-    (@ $feature:literal, $judged:literal; $($meta:expr => $run:expr),+) => {
-        pub const CHECKS: &[crate::check::Meta] = &[$($meta.judged($judged)),+];
-
-        #[cfg(feature = $feature)]
-        pub fn run(name: &str) -> Option<crate::check::CheckResult> {
-            let row = CHECKS.iter().position(|meta| meta.short_id() == name)?;
-            // In a block of their own, so that the code's names cannot shadow `name`.
-            let runs: Vec<fn() -> crate::check::CheckResult> = {
-                #[allow(unused_imports)]
-                use code::*;
-                vec![$(|| $run),+]
-            };
-            Some(runs[row]())
-        }
-    };
-}
-
 /// The calls of the student's code the subject answers for a hidden check (`remote.rs`), by
 /// name: the rows of `rows::student_fns!` marked `remote`.
 pub const ANSWERS: &[(&str, crate::remote::Answer)] = &[
@@ -62,16 +31,16 @@ pub const ANSWERS: &[(&str, crate::remote::Answer)] = &[
 ];
 
 // BEGIN GENERATED modules: written by `cargo run -p grader -- dev sync` from lectures/*/Cargo.toml; edit those, not this.
-pub mod l01;
-pub mod l02;
-pub mod l03;
-pub mod l04;
-pub mod l05;
-pub mod l06;
-pub mod l07;
-pub mod l08;
-pub mod l09;
-pub mod l10;
+pub use raylab_checks_l01 as l01;
+pub use raylab_checks_l02 as l02;
+pub use raylab_checks_l03 as l03;
+pub use raylab_checks_l04 as l04;
+pub use raylab_checks_l05 as l05;
+pub use raylab_checks_l06 as l06;
+pub use raylab_checks_l07 as l07;
+pub use raylab_checks_l08 as l08;
+pub use raylab_checks_l09 as l09;
+pub use raylab_checks_l10 as l10;
 // END GENERATED modules
 // INSTRUCTOR BEGIN
 #[cfg(feature = "hidden")]
@@ -258,5 +227,45 @@ mod tests {
             wrong.len(),
             wrong[..wrong.len().min(20)].join("\n")
         );
+    }
+
+    /// The report's data for a failed scene of 08 (what `view3d-data.js` holds): the scene, the
+    /// expected and your trees of all 130 grid pixels, and first the pair of the grid pixel
+    /// nearest the first differing one, (150, 70) → (152, 72), whose expected tree is the
+    /// printed tree (`view3d::tests::the_blessed_whitted_trees_are_the_printed_tree` holds its
+    /// snapshot).
+    #[test]
+    fn the_report_s_view_of_a_failed_whitted_holds_the_grid_s_trees() {
+        super::install();
+        let file = crate::scenes::scene_files(Some("08"))
+            .unwrap()
+            .into_iter()
+            .find(|f| f.name() == "whitted")
+            .unwrap();
+        let scene = raylab::scene::load(&file.scene).unwrap();
+        let dir =
+            std::env::temp_dir().join(format!("raylab-view-data-{}", std::process::id())).join("08/whitted");
+        std::fs::create_dir_all(&dir).unwrap();
+        // "Yours": the reference's own trees (a submission's differ in their numbers, not in form).
+        let yours = serde_json::to_string(&crate::stages::grid_trees("08", &scene).unwrap()).unwrap();
+        crate::images::picture::write_view(&file, "08", &scene, &yours, (150, 70), &dir).unwrap();
+        let script = std::fs::read_to_string(dir.join(raylab_protocol::VIEW_DATA)).unwrap();
+        let prefix = "(window.raylabViewData = window.raylabViewData || {})[\"08/whitted\"] = ";
+        let data: serde_json::Value =
+            serde_json::from_str(script.strip_prefix(prefix).unwrap().trim_end().trim_end_matches(';'))
+                .unwrap();
+        let printed = crate::stages::pixel_tree("08", &scene, (152, 72)).unwrap();
+        let printed = printed.split_once('\n').unwrap().1;
+        assert_eq!(data["trees"][0]["label"], "expected");
+        assert_eq!(data["trees"][1]["label"], "yours");
+        for tree in data["trees"].as_array().unwrap() {
+            assert_eq!(tree["pixel"], serde_json::json!([152, 72]));
+            assert_eq!(tree["text"].as_str(), Some(printed));
+        }
+        assert_eq!(data["grid"]["step"], 16);
+        assert_eq!(data["grid"]["expected"].as_array().unwrap().len(), 130);
+        assert_eq!(data["grid"]["yours"].as_array().unwrap().len(), 130);
+        assert_eq!(data["objects"].as_array().unwrap().len(), scene.objects.len());
+        let _ = std::fs::remove_dir_all(dir.parent().unwrap().parent().unwrap());
     }
 }
