@@ -43,7 +43,7 @@ fn checks_manifest(l: &Lecture) -> String {
          # (the grader's build where the lecture does not compile) their declarations alone.\n\
          [features]\ndefault = [\"l{n}\"]\n# BEGIN GENERATED features:\n# END GENERATED features\n\n\
          [dependencies]\nraylab.workspace = true\nraylab-checks-core.workspace = true\n\
-         raylab-testing.workspace = true\nserde.workspace = true\nserde_json.workspace = true\n\
+         raylab-testing.workspace = true\n\
          # BEGIN GENERATED dependencies:\n# END GENERATED dependencies\n\n[lints]\nworkspace = true\n"
     )
 }
