@@ -360,9 +360,9 @@ pub struct Geometry {
     pub id_color: fn(usize) -> Color,
 }
 
-/// The code the stages draw with, lent by the lectures built (each lecture's checks lend theirs,
-/// `lectures::lend`, and `main` installs the whole, [`install`], before a check runs): what lets
-/// the rest of the checks draw a lecture's pictures without naming the lecture. A stage is built
+/// The code the stages draw with, lent by the lectures built (each lecture's checks crate lends
+/// its own, `stage::lend`, and the binary's `main` installs the whole, [`install`], before a check
+/// runs): what lets the core draw a lecture's pictures without depending on the lecture. A stage is built
 /// when all it draws with is lent ([`built`]).
 #[derive(Default)]
 pub struct Lent {
