@@ -5,6 +5,7 @@
 use raylab::{Color, Float, Image, Scene, Vec3};
 
 use super::CHANNEL_THRESHOLD;
+use super::geometry::object_at;
 use crate::path;
 use crate::scenes::{SceneFile, calls_snapshot};
 use crate::stages::{self, Draws};
@@ -204,11 +205,4 @@ fn light_direction(light: &raylab::scene::Light, point: Vec3) -> Option<Vec3> {
         }
         LightKind::Sphere { center, .. } => (center - point).try_normalize(),
     }
-}
-
-/// The index of the object pixel (x, y) of an id image shows.
-fn object_at(id: &Image, x: u32, y: u32, scene: &Scene) -> Option<usize> {
-    let id_color = stages::geometry()?.id_color;
-    let pixel = raylab::color::to_srgb8(id.get(x, y));
-    (0..scene.objects.len()).find(|&i| raylab::color::to_srgb8(id_color(i)) == pixel)
 }

@@ -222,14 +222,17 @@ fn describe_id(image: &Image, x: u32, y: u32, scene: &Scene) -> String {
     if pixel == [0, 0, 0] {
         return "none (background)".into();
     }
-    if let Some(geometry) = stages::geometry() {
-        for (index, object) in scene.objects.iter().enumerate() {
-            if raylab::color::to_srgb8((geometry.id_color)(index)) == pixel {
-                return format!("#{index} ({})", object.shape.kind());
-            }
-        }
+    match object_at(image, x, y, scene) {
+        Some(index) => format!("#{index} ({})", scene.objects[index].shape.kind()),
+        None => format!("with colour {pixel:?}"),
     }
-    format!("with colour {pixel:?}")
+}
+
+/// The index of the object pixel (x, y) of an id image shows, by lecture 02's id colours.
+pub(super) fn object_at(id: &Image, x: u32, y: u32, scene: &Scene) -> Option<usize> {
+    let id_color = stages::geometry()?.id_color;
+    let pixel = raylab::color::to_srgb8(id.get(x, y));
+    (0..scene.objects.len()).find(|&i| raylab::color::to_srgb8(id_color(i)) == pixel)
 }
 
 pub(super) fn check_geometry(file: &SceneFile) -> CheckResult {
