@@ -8,6 +8,7 @@
 #
 #   scripts/measure-edit-verdict.sh             the table (~2 minutes on 2 cores)
 #   ROUNDS=5 scripts/measure-edit-verdict.sh    medians of 5 rounds (the machine's noise is ±0.1 s)
+#   LECTURES="09 10" scripts/measure-edit-verdict.sh   those lectures only
 #   EDIT=comment scripts/measure-edit-verdict.sh   the edit a comment appended to lib.rs instead
 #                                               (the table before session 25: cheaper to rebuild)
 #   scripts/measure-edit-verdict.sh --debuginfo the relink after an edit and a cold build of the
@@ -53,6 +54,7 @@ cargo run -q -p grader > /dev/null 2>&1 || true
 for i in $(seq 1 "${ROUNDS:-3}"); do
   for d in lectures/[0-9][0-9]-*/; do
     n=$(basename "$d" | cut -c1-2)
+    case " ${LECTURES:-$n} " in *" $n "*) ;; *) continue ;; esac
     if [ "${EDIT:-code}" = comment ]; then
       f=$d/src/lib.rs
       cp "$f" "$raw.bak"

@@ -74,6 +74,11 @@ impl Image {
         y as usize * self.width as usize + x as usize
     }
 
+    /// The indices (row-major) of the NaN or infinite pixels, in order.
+    pub fn non_finite_pixels(&self) -> Vec<usize> {
+        self.pixels.iter().enumerate().filter(|(_, c)| !c.is_finite()).map(|(i, _)| i).collect()
+    }
+
     /// The number of NaN or infinite pixels, and the first one.
     pub fn non_finite(&self) -> Option<(usize, (u32, u32))> {
         let mut bad = self.pixels.iter().enumerate().filter(|(_, c)| !c.is_finite());
