@@ -13,15 +13,17 @@ use crate::bvh::Bvh;
 /// two, which wins from a few dozen primitives on.
 pub const BVH_THRESHOLD: usize = 32;
 
-/// How many primitives a BVH over `objects` would hold: one per triangle of
-/// an untransformed mesh, one per other object with a finite box (a
-/// transformed mesh is one primitive, tested whole). Unbounded objects
+/// How many bounded primitives brute force tests on each ray: one per
+/// triangle of a mesh, one per other object with a finite box. A transformed
+/// mesh counts its triangles too: brute force tests them all (04's
+/// `hit_object`), and a BVH, where the mesh is one primitive tested whole,
+/// tests them only for the rays that meet its box. Unbounded objects
 /// (planes) are not counted: every ray tests them either way.
 pub fn bounded_primitives(objects: &[Object]) -> usize {
     objects
         .iter()
-        .map(|object| match (&object.shape, &object.transform) {
-            (Shape::Mesh(mesh), None) => mesh.triangles.len(),
+        .map(|object| match &object.shape {
+            Shape::Mesh(mesh) => mesh.triangles.len(),
             _ => usize::from(object_bounds(object).is_finite()),
         })
         .sum()
@@ -64,11 +66,16 @@ mod tests {
         assert!(!needs_bvh(&spheres(32)));
         assert!(needs_bvh(&spheres(33)));
         assert!(!needs_bvh(&vec![floor(); 100]));
-        // The icosphere(1) has 80 triangles: a BVH; placed by a transform it is one
-        // primitive (tested whole), so alone it stays brute force.
-        let ico = Arc::new(Mesh::icosphere(1));
+        // The icosphere(1) has 80 triangles: a BVH, placed by a transform or not (brute force
+        // tests its 80 triangles on every ray either way; the BVH, where a transformed mesh is
+        // one primitive, only on the rays that meet its box). The icosahedron, icosphere(0),
+        // has 20: brute force.
+        let (ico, icosahedron) = (Arc::new(Mesh::icosphere(1)), Arc::new(Mesh::icosphere(0)));
+        let scaled = Some(Mat4::from_scale(Vec3::splat(2.0)));
         assert!(needs_bvh(&[object(Shape::Mesh(ico.clone()), 0, None)]));
-        assert!(!needs_bvh(&[object(Shape::Mesh(ico), 0, Some(Mat4::from_scale(Vec3::splat(2.0))))]));
+        assert!(needs_bvh(&[object(Shape::Mesh(ico), 0, scaled)]));
+        assert_eq!(bounded_primitives(&[object(Shape::Mesh(icosahedron.clone()), 0, scaled)]), 20);
+        assert!(!needs_bvh(&[object(Shape::Mesh(icosahedron), 0, scaled)]));
     }
 
     #[test]
