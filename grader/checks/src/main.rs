@@ -1,18 +1,13 @@
 //! `raylab-checks`: the grader's checks and the complete tracer, in a binary
 //! the `grader` driver builds with the lectures that compile (one cargo
-//! feature per lecture) and runs in child processes, one per check.
+//! feature per lecture) and runs in child processes, one per check. Its
+//! command line (`list`, `run`, `serve`, `judge`) is the core's
+//! (`raylab_checks_core::cli`): this crate, compiled again after every edit of
+//! a lecture, holds only the table of lectures (`lectures/mod.rs`) and the tools.
 //!
-//! - `raylab-checks list` prints every check as JSON, with whether its code is built;
-//! - `raylab-checks run ID --verdict FILE --out DIR` runs one check and writes
-//!   its outcome to FILE (a panic writes the panic there first);
-//! - `raylab-checks judge ID --out DIR` and `raylab-checks run ID --channel ADDR
-//!   --out DIR` run one check in two processes, the second the student's code
-//!   and the first the verdict (`judge.rs`); a hidden check's subject is
-//!   `raylab-checks serve --channel ADDR`, which makes the calls of the student's
-//!   code the judge asks for (`remote.rs`);
-//! - `render`, `bless` and `bench-rays` are the tools of `grader render`,
-//!   `grader bless` and `grader bench-rays`, built with the feature `tools` (every
-//!   lecture; the grader asks for it for them, not to grade).
+//! `render`, `bless`, `bench-rays` and `tradeoffs` are the tools of `grader render`,
+//! `grader bless`, `grader bench-rays` and `grader tradeoffs`, built with the feature
+//! `tools` (every lecture; the grader asks for it for them, not to grade).
 
 // Built with some lectures only (those that compile), parts of the crate go unused:
 // that is expected and not worth a warning in the student's terminal.
@@ -23,258 +18,36 @@ mod lectures;
 mod tools;
 
 // The core's modules, where this crate's code (and the tools') has always named them.
-use raylab_checks_core::{check, images, judge, path, platform, remote, scenes, stages, trees, view3d};
+use raylab_checks_core::{check, path, platform, remote, scenes, stages, trees, view3d};
 
-use std::path::{Path, PathBuf};
 use std::process::ExitCode;
-use std::sync::Arc;
 
-use clap::{Parser, Subcommand};
+use raylab_checks_core::cli::{self, Catalogue};
 
-use crate::check::Outcome;
-use crate::judge::{Ended, Role};
-
-#[derive(Parser)]
-#[command(name = "grader", about = "The raylab checks and tools (run through `cargo run -p grader`).")]
-struct Cli {
-    #[command(subcommand)]
-    command: Command,
-}
-
-#[derive(Subcommand)]
-enum Command {
-    /// Every check, as JSON: id, lecture, exercise, kind, points, needs, and whether it is built.
-    List,
-    /// Run one check in this process (the grader runs each in its own).
-    Run {
-        /// `NN/exercise/name`.
-        id: String,
-        /// Where to write the outcome (JSON).
-        #[arg(long, required_unless_present = "channel", conflicts_with = "channel")]
-        verdict: Option<PathBuf>,
-        /// Where image checks write expected / yours / diff.
-        #[arg(long)]
-        out: PathBuf,
-        /// As the subject of a judged check: send the student's values to the judge listening
-        /// at this loopback address, and write no verdict (src/judge.rs). The token it says
-        /// first comes on standard input, as the judge's does.
-        #[arg(long)]
-        channel: Option<String>,
-    },
-    /// As the subject of a hidden check, which runs in its judge alone: make the calls of the
-    /// student's code the judge at ADDR sends, and send their values back (src/remote.rs).
-    Serve {
-        #[arg(long)]
-        channel: String,
-    },
-    /// Judge one check from the values a subject sends (`run ID --channel`): read the token on
-    /// standard input, print `listening ADDR`, take the connection that says the token first,
-    /// print `verdict JSON`.
-    Judge {
-        /// `NN/exercise/name`.
-        id: String,
-        /// Where image checks write expected / yours / diff.
-        #[arg(long)]
-        out: PathBuf,
-    },
-    /// Render a TOML or MIT 6.837 scene with the complete tracer.
-    #[cfg(feature = "tools")]
-    Render(tools::render::RenderArgs),
-    /// Regenerate the lectures' snapshots (PNG and AOVs) from the reference.
-    #[cfg(feature = "tools")]
-    Bless {
-        /// Only this lecture (e.g. 02).
-        lecture: Option<String>,
-    },
-    /// Primary-ray throughput of lecture 09's BVH on a mesh (run with --release).
-    #[cfg(feature = "tools")]
-    BenchRays(tools::bench::BenchArgs),
-    // INSTRUCTOR BEGIN
-    /// Speed against accuracy, side by side: tables and plots under target/grader/tradeoffs (run with
-    /// --release).
-    #[cfg(feature = "tools")]
-    Tradeoffs(tools::tradeoffs::TradeoffsArgs),
-    // INSTRUCTOR END
-}
+/// The lectures this binary is built with, as the command line reaches them.
+const CATALOGUE: Catalogue = Catalogue {
+    install: lectures::install,
+    infos: lectures::infos,
+    run: lectures::run,
+    answers: lectures::ANSWERS,
+};
 
 fn main() -> ExitCode {
-    let cli = Cli::parse();
-    // The stages' code, lent by the lectures built: no student code runs to collect it.
-    lectures::install();
-    let result = match cli.command {
-        Command::List => serde_json::to_string_pretty(&listed())
-            .map(|json| println!("{json}"))
-            .map(|()| ExitCode::SUCCESS)
-            .map_err(|e| e.to_string()),
-        Command::Run { id, verdict, out, channel } => match (channel, verdict) {
-            // Connected before any student code runs: the judge takes the first connection.
-            (Some(address), _) => {
-                subject_limits();
-                token().and_then(|token| Role::subject(&address, token)).and_then(|role| {
-                    let role = Arc::new(role);
-                    run(&id, VerdictTo::Judge(role.clone()), &out, role)
-                })
-            }
-            (None, Some(file)) => run(&id, VerdictTo::File(file), &out, Arc::new(Role::Direct)),
-            (None, None) => Err("--verdict FILE or --channel ADDR".into()),
-        },
-        Command::Serve { channel } => {
-            subject_limits();
-            token().and_then(|token| Role::subject(&channel, token)).and_then(|role| {
-                let role = Arc::new(role);
-                install_panic_hook(Box::leak(Box::new(VerdictTo::Judge(role.clone()))));
-                match judge::enter(role, || {
-                    judge::serve_calls(|call| remote::answer_encoded(lectures::ANSWERS, call))
-                }) {
-                    Ok(served) => served.map(|()| ExitCode::SUCCESS),
-                    Err(_) => Ok(no_verdict()),
-                }
-            })
-        }
-        Command::Judge { id, out } => {
-            platform::keep_others_out();
-            token().and_then(Role::judge).and_then(|role| match role {
-                Some(role) => run(&id, VerdictTo::Stdout, &out, Arc::new(role)),
-                // The subject ended without connecting: how it ended is the verdict.
-                None => Ok(no_verdict()),
-            })
-        }
-        #[cfg(feature = "tools")]
-        Command::Render(args) => tools::render::render(&args).map(|()| ExitCode::SUCCESS),
-        #[cfg(feature = "tools")]
-        Command::Bless { lecture } => tools::bless::bless(lecture.as_deref()).map(|()| ExitCode::SUCCESS),
-        #[cfg(feature = "tools")]
-        Command::BenchRays(args) => tools::bench::bench_rays(&args).map(|()| ExitCode::SUCCESS),
-        // INSTRUCTOR BEGIN
-        #[cfg(feature = "tools")]
-        Command::Tradeoffs(args) => tools::tradeoffs::tradeoffs(&args).map(|()| ExitCode::SUCCESS),
-        // INSTRUCTOR END
-    };
-    result.unwrap_or_else(|message| {
-        eprintln!("error: {message}");
-        ExitCode::FAILURE
-    })
-}
-
-/// How a judge or a subject ends without a verdict of its own: the driver gives the verdict
-/// from how the subject ended.
-fn no_verdict() -> ExitCode {
-    ExitCode::from(u8::try_from(raylab_protocol::NO_VERDICT).unwrap_or(u8::MAX))
-}
-
-/// The token the driver wrote on standard input for a judge and its subject.
-fn token() -> Result<u64, String> {
-    raylab_protocol::read_token(&mut std::io::stdin().lock())
-}
-
-/// The limits of a subject, set before any student code runs (a submission's code cannot run
-/// before `main`: it is built with unsafe code forbidden): files of at most [`SUBJECT_FILE_LIMIT`]
-/// (a subject sends values and writes nothing), no core dumps. Its memory is capped with every
-/// check's ([`install_panic_hook`]); its processes, as the grading user's, by the driver.
-fn subject_limits() {
-    platform::limit_files(SUBJECT_FILE_LIMIT);
-}
-
-/// The largest file a subject may write: it writes none of its own (the judge writes the
-/// report's images); a student's debugging output of a picture or two still fits.
-const SUBJECT_FILE_LIMIT: u64 = 16 << 20;
-
-/// The address space a check may use. The lecture checks need a few tens of
-/// megabytes; a student's runaway allocation fails here ("memory allocation
-/// of N bytes failed") instead of swapping the machine.
-const MEMORY_LIMIT: u64 = 4 << 30;
-
-/// Where a check's outcome goes.
-enum VerdictTo {
-    /// A file (`run --verdict`: local grading, one process).
-    File(PathBuf),
-    /// The judge's stdout, as a `verdict JSON` line (`judge`).
-    Stdout,
-    /// Nowhere: a subject (`run --channel`) reports values, never a verdict (its role's channel
-    /// takes its last values, and a panic: the panic hook holds it).
-    Judge(Arc<Role>),
-}
-
-impl VerdictTo {
-    fn write(&self, outcome: &Outcome) -> Result<(), String> {
-        let json = serde_json::to_string(outcome).map_err(|e| e.to_string())?;
-        match self {
-            VerdictTo::File(file) => {
-                std::fs::write(file, json).map_err(|e| format!("{}: {e}", file.display()))
-            }
-            VerdictTo::Stdout => judge::print_verdict(&json),
-            // The subject's last values, sent: the judge writes the verdict.
-            VerdictTo::Judge(role) => {
-                role.flush();
-                Ok(())
-            }
-        }
+    #[cfg(feature = "tools")]
+    if let Some(code) = tools::main() {
+        return code;
     }
-}
-
-/// Runs check `id` in `role` (`judge.rs`): a panic hook records any panic as the outcome (the
-/// grader tells `todo!()` from other panics by its message), then the outcome replaces it when
-/// the check returns. A subject reports the panic to its judge instead, and writes nothing. A
-/// check that ends early (the judge's verdict reached, or the other process gone) ends here.
-fn run(id: &str, verdict: VerdictTo, out: &Path, role: Arc<Role>) -> Result<ExitCode, String> {
-    // The panic hook holds it for the life of the process (a process per check).
-    let verdict: &'static VerdictTo = Box::leak(Box::new(verdict));
-    install_panic_hook(verdict);
-    let image = id.split('/').nth(1).is_some_and(|kind| matches!(kind, "image" | "geometry" | "final"));
-    let outcome = match judge::enter(role, || if image { images::run(id, out) } else { lectures::run(id) }) {
-        Ok(None) => return Err(format!("no check {id} in this build")),
-        Ok(Some(Ok(detail))) => Outcome::Passed { detail, images: None },
-        Ok(Some(Err(failure))) => Outcome::Failed(failure),
-        Err(Ended::Verdict(outcome)) => outcome,
-        Err(Ended::Early) => return Ok(no_verdict()),
-    };
-    verdict.write(&outcome).map(|()| ExitCode::SUCCESS)
-}
-
-/// Caps the process's memory and records any panic as the outcome (written where `verdict` says; a
-/// subject reports it to its judge).
-fn install_panic_hook(verdict: &'static VerdictTo) {
-    // Best effort: where limits cannot be set, the grader's time limit still holds.
-    platform::limit_memory(MEMORY_LIMIT);
-    let default_hook = std::panic::take_hook();
-    std::panic::set_hook(Box::new(move |info| {
-        // A call on a failed picture's path that panics is caught there: not this check's outcome.
-        if path::probing() {
-            return;
-        }
-        let message = info
-            .payload()
-            .downcast_ref::<&str>()
-            .map(|s| (*s).to_owned())
-            .or_else(|| info.payload().downcast_ref::<String>().cloned())
-            .unwrap_or_else(|| "(a panic without a message)".to_owned());
-        let (path, line) = info.location().map_or((String::new(), 0), |l| (l.file().to_owned(), l.line()));
-        match verdict {
-            VerdictTo::Judge(role) => role.report_panic(&message, &path, line),
-            to => {
-                let _ = to.write(&check::Outcome::Panicked { message, file: path, line });
-            }
-        }
-        default_hook(info);
-    }));
-}
-
-/// Every declared check, as `list` prints them: the lectures' unit and extreme checks, then the
-/// scenes' geometry, image and final checks.
-fn listed() -> Vec<check::Info> {
-    let mut infos = lectures::infos();
-    infos.extend(images::infos());
-    infos
+    cli::main(&CATALOGUE)
 }
 
 #[cfg(test)]
 mod tests {
-    use super::*;
+    use super::CATALOGUE;
     use std::collections::HashSet;
 
     #[test]
     fn ids_are_unique_and_every_need_names_an_exercise_of_an_earlier_or_same_lecture_images_included() {
-        let infos = listed();
+        let infos = raylab_checks_core::cli::listed(&CATALOGUE);
         let mut seen = HashSet::new();
         for info in &infos {
             assert!(seen.insert(info.id.clone()), "{} is declared twice", info.id);
@@ -293,7 +66,7 @@ mod tests {
     /// one that was not would let a submission write its own verdict.
     #[test]
     fn every_check_is_judged_hidden_ones_included() {
-        let infos = listed();
+        let infos = raylab_checks_core::cli::listed(&CATALOGUE);
         let unjudged: Vec<&str> = infos.iter().filter(|i| !i.judged).map(|i| i.id.as_str()).collect();
         assert!(unjudged.is_empty(), "not judged: {unjudged:?}");
         assert!(infos.iter().any(|i| i.hidden) || !cfg!(feature = "hidden"), "no hidden check listed");

@@ -4,6 +4,7 @@
 //! (`grader/checks/lectures/lNN`), each of which lends the stages its code (`stages::Lent`).
 
 pub mod check;
+pub mod cli;
 pub mod images;
 pub mod judge;
 pub mod path;

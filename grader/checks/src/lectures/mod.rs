@@ -248,7 +248,8 @@ mod tests {
         std::fs::create_dir_all(&dir).unwrap();
         // "Yours": the reference's own trees (a submission's differ in their numbers, not in form).
         let yours = serde_json::to_string(&crate::stages::grid_trees("08", &scene).unwrap()).unwrap();
-        crate::images::picture::write_view(&file, "08", &scene, &yours, (150, 70), &dir).unwrap();
+        raylab_checks_core::images::picture::write_view(&file, "08", &scene, &yours, (150, 70), &dir)
+            .unwrap();
         let script = std::fs::read_to_string(dir.join(raylab_protocol::VIEW_DATA)).unwrap();
         let prefix = "(window.raylabViewData = window.raylabViewData || {})[\"08/whitted\"] = ";
         let data: serde_json::Value =

@@ -17,7 +17,7 @@ use std::path::{Path, PathBuf};
 
 use clap::Parser;
 
-use crate::{Cli, Command};
+use crate::tools::{Tool, Tools};
 
 /// Values at the edge of f32's and f64's range, and the integers past f32's
 /// and u32's exact range.
@@ -200,7 +200,7 @@ fn render_path(dir: &Path, scene: &Path) -> Result<Outcome, String> {
     let argv =
         ["grader", "render", &scene.to_string_lossy(), "--size", "6x4", "-o", &output.to_string_lossy()]
             .map(str::to_owned);
-    let Command::Render(args) = Cli::try_parse_from(argv).map_err(|e| e.to_string())?.command else {
+    let Tool::Render(args) = Tools::try_parse_from(argv).map_err(|e| e.to_string())?.tool else {
         return Err("not a render command".to_owned());
     };
     let result =

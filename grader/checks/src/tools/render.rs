@@ -478,7 +478,7 @@ fn write(args: &RenderArgs, image: &raylab::Image, stats: &raylab::stats::RaySta
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::{Cli, Command};
+    use crate::tools::{Tool, Tools};
     use clap::Parser;
     use std::path::Path;
 
@@ -490,8 +490,7 @@ mod tests {
     fn settings(text: &str, flags: &[&str]) -> TraceSettings {
         let scene = raylab::scene::parse_toml(text, Path::new("s.toml")).unwrap_or_else(|e| panic!("{e}"));
         let argv = ["grader", "render", "s.toml"].into_iter().chain(flags.iter().copied());
-        let Command::Render(args) = Cli::try_parse_from(argv).unwrap_or_else(|e| panic!("{e}")).command
-        else {
+        let Tool::Render(args) = Tools::try_parse_from(argv).unwrap_or_else(|e| panic!("{e}")).tool else {
             panic!("a render command");
         };
         args.settings(&scene)
@@ -581,8 +580,8 @@ mod tests {
     #[test]
     fn a_sample_count_outside_1_to_4096_is_refused() {
         for n in ["0", "4097", "-1", "many"] {
-            assert!(Cli::try_parse_from(["grader", "render", "s.toml", "--samples", n]).is_err(), "{n}");
+            assert!(Tools::try_parse_from(["grader", "render", "s.toml", "--samples", n]).is_err(), "{n}");
         }
-        assert!(Cli::try_parse_from(["grader", "render", "s.toml", "--samples", "4096"]).is_ok());
+        assert!(Tools::try_parse_from(["grader", "render", "s.toml", "--samples", "4096"]).is_ok());
     }
 }

@@ -48,7 +48,7 @@ pub fn load_scene(relative: &str, divisor: u32) -> Result<Scene, String> {
 /// sRGB values at nv-flip's default viewing distance (0 identical, 1 opposite). A NaN pixel is
 /// shown as magenta, as the grader's image checks do.
 pub fn mean_flip(reference: &Image, test: &Image) -> f64 {
-    use crate::images::picture::{flip_error, shown};
+    use raylab_checks_core::images::picture::{flip_error, shown};
     let values = flip_error(&shown(reference), &shown(test)).to_vec();
     values.iter().map(|&v| f64::from(v)).sum::<f64>() / values.len().max(1) as f64
 }
