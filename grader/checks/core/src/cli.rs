@@ -205,7 +205,8 @@ fn run(
     let verdict: &'static VerdictTo = Box::leak(Box::new(verdict));
     install_panic_hook(verdict);
     let image = id.split('/').nth(1).is_some_and(|kind| matches!(kind, "image" | "geometry" | "final"));
-    let outcome = match judge::enter(role, || if image { images::run(id, out) } else { (catalogue.run)(id) }) {
+    let outcome = match judge::enter(role, || if image { images::run(id, out) } else { (catalogue.run)(id) })
+    {
         Ok(None) => return Err(format!("no check {id} in this build")),
         Ok(Some(Ok(detail))) => Outcome::Passed { detail, images: None },
         Ok(Some(Err(failure))) => Outcome::Failed(failure),

@@ -19,11 +19,21 @@ use crate::stages::{self, Draws};
 
 /// A student's picture against its snapshot: the judge's (see [`check_image`]).
 struct Compared {
-    expected: Image,
+    /// The snapshot's values, as linear colours once asked for ([`Compared::expected`]): only a
+    /// picture that differs needs them.
+    snapshot: Srgb8,
+    expected: std::cell::OnceCell<Image>,
     comparison: raylab::compare::Comparison,
     images: Images,
     /// The comparison's figures, as the verdict states them.
     measured: String,
+}
+
+impl Compared {
+    /// The snapshot as linear colours.
+    fn expected(&self) -> &Image {
+        self.expected.get_or_init(|| self.snapshot.to_linear())
+    }
 }
 
 /// Compares `yours` with the snapshot of `file` drawn by `stage`, and writes expected / yours / diff
@@ -37,13 +47,14 @@ fn compare_with_snapshot(
     let case = format!("{}/{}", file.folder, file.name());
     let snapshot = Snapshot::read(&stage_snapshot(file, stage))
         .map_err(|e| fail(&case, "a snapshot", no_snapshot(file, e), ""))?;
-    let expected = snapshot.srgb8.to_linear();
     // Your picture's 8-bit values, encoded once: compared, shown, written.
     let shown_yours = shown(yours);
     let wrong = yours.non_finite_pixels();
-    let comparison = compare_srgb8(&snapshot.srgb8, &shown_yours, CHANNEL_THRESHOLD, &wrong).map_err(|e| {
-        fail(&case, format!("{}×{}", expected.width, expected.height), e, "one pixel per (x, y), row by row")
-    })?;
+    let comparison =
+        compare_srgb8(&snapshot.srgb8, &shown_yours, CHANNEL_THRESHOLD, &wrong).map_err(|e| {
+            let size = format!("{}×{}", snapshot.srgb8.width, snapshot.srgb8.height);
+            fail(&case, size, e, "one pixel per (x, y), row by row")
+        })?;
     let images =
         write_images(dir, &snapshot, &shown_yours).map_err(|e| fail(&case, "images written", e, ""))?;
     let measured = format!(
@@ -55,7 +66,7 @@ fn compare_with_snapshot(
     for stale in ["tree.txt", VIEW_DATA, VIEW_MISSING] {
         let _ = std::fs::remove_file(dir.join(stale));
     }
-    Ok(Compared { expected, comparison, images, measured })
+    Ok(Compared { snapshot: snapshot.srgb8, expected: Default::default(), comparison, images, measured })
 }
 
 /// Renders `file` with stage `stage` (its `[render]` settings where the
@@ -90,7 +101,7 @@ pub(super) fn check_image(file: &SceneFile, stage: &str, dir: &Path) -> CheckRes
     // The grid pixel the report's view opens at (a differing one, nearest the first): where the
     // student's calls on the picture's path are compared with the reference's.
     let at = judge::decide(|| match &compared {
-        Some(Ok(c)) => view_pixel(&c.expected, &yours, (x, y)),
+        Some(Ok(c)) => view_pixel(c.expected(), &yours, (x, y)),
         _ => (x, y),
     });
     let draws = stages::stage(stage).map(|s| s.draws);
@@ -117,7 +128,7 @@ pub(super) fn check_image(file: &SceneFile, stage: &str, dir: &Path) -> CheckRes
                 }
             ),
             Some(Ok(None)) => {
-                let expected = compared.as_ref().and_then(|c| c.as_ref().ok()).map(|c| &c.expected);
+                let expected = compared.as_ref().and_then(|c| c.as_ref().ok()).map(Compared::expected);
                 let seen = expected.map(|expected| {
                     shading_diagnosis(stage, file, &scene, expected, &yours, rays.as_deref())
                 });
@@ -162,7 +173,7 @@ pub(super) fn check_image(file: &SceneFile, stage: &str, dir: &Path) -> CheckRes
     let show = |c: Color| format!("({:.3}, {:.3}, {:.3})", c.x, c.y, c.z);
     Err(Failure {
         case,
-        expected: format!("pixel ({x}, {y}) = {} (linear RGB)", show(compared.expected.get(x, y))),
+        expected: format!("pixel ({x}, {y}) = {} (linear RGB)", show(compared.expected().get(x, y))),
         got: format!("{}; {}", show(yours.get(x, y)), compared.measured),
         cause,
         images: Some(Box::new(compared.images)),
@@ -266,15 +277,23 @@ impl Snapshot {
 pub fn write_images(dir: &Path, snapshot: &Snapshot, yours: &Srgb8) -> Result<Images, String> {
     let expected = &snapshot.srgb8;
     std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
-    let error = flip_error(expected, yours);
-    let values = error.to_vec();
-    let flip_mean = values.iter().map(|&v| v as f64).sum::<f64>() / values.len().max(1) as f64;
-    let flip_fraction_over =
-        values.iter().filter(|&&v| v > FLIP_THRESHOLD).count() as f64 / values.len().max(1) as f64;
-    let diff = Srgb8 {
-        width: expected.width,
-        height: expected.height,
-        bytes: error.apply_color_lut(&nv_flip::magma_lut()).to_vec(),
+    let same = yours == expected;
+    let (diff, flip_mean, flip_fraction_over) = if same {
+        // FLIP's error is 0 at every pixel (see `flip_error`): its map is magma's colour of 0.
+        let (width, height) = (expected.width, expected.height);
+        (Srgb8 { width, height, bytes: magma_of_zero().repeat(width as usize * height as usize) }, 0.0, 0.0)
+    } else {
+        let error = flip_error(expected, yours);
+        let values = error.to_vec();
+        let flip_mean = values.iter().map(|&v| v as f64).sum::<f64>() / values.len().max(1) as f64;
+        let flip_fraction_over =
+            values.iter().filter(|&&v| v > FLIP_THRESHOLD).count() as f64 / values.len().max(1) as f64;
+        let diff = Srgb8 {
+            width: expected.width,
+            height: expected.height,
+            bytes: error.apply_color_lut(&nv_flip::magma_lut()).to_vec(),
+        };
+        (diff, flip_mean, flip_fraction_over)
     };
     let write = |name: &str, png: &[u8]| -> Result<String, String> {
         let path = dir.join(name);
@@ -288,11 +307,17 @@ pub fn write_images(dir: &Path, snapshot: &Snapshot, yours: &Srgb8) -> Result<Im
     };
     Ok(Images {
         expected: write("expected.png", &snapshot.png)?,
-        yours: if yours == expected { write("yours.png", &snapshot.png)? } else { save(yours, "yours.png")? },
+        yours: if same { write("yours.png", &snapshot.png)? } else { save(yours, "yours.png")? },
         diff: save(&diff, "diff.png")?,
         flip_mean,
         flip_fraction_over,
     })
+}
+
+/// The colour of FLIP's error 0 in its error map (magma's first).
+fn magma_of_zero() -> [u8; 3] {
+    let lut = nv_flip::magma_lut().to_vec();
+    [lut[0], lut[1], lut[2]]
 }
 
 #[cfg(test)]
@@ -318,6 +343,11 @@ mod tests {
             flip.iter().copied().reduce(f32::max)
         );
         assert_eq!(flip_error(&picture, &picture.clone()).to_vec(), flip);
+        // And its map, as the report's diff.png shows it, is magma's colour of 0 everywhere.
+        let map = nv_flip::flip(rgb8(&picture), rgb8(&picture), nv_flip::DEFAULT_PIXELS_PER_DEGREE)
+            .apply_color_lut(&nv_flip::magma_lut())
+            .to_vec();
+        assert!(map.chunks_exact(3).all(|c| c == magma_of_zero()), "{:?}", &map[..3]);
         let mut off = picture.clone();
         let middle = 3 * (off.width * (off.height / 2) + off.width / 2) as usize;
         off.bytes[middle] = off.bytes[middle].wrapping_add(128);
