@@ -25,8 +25,11 @@ pub fn shade_light(material: &Material, diffuse: Color, n: Vec3, v: Vec3, sample
     let l = sample.direction;
     // The diffuse term: Lambert's cosine.
     let diffuse_term = diffuse * lambert(n, l);
-    // The specular term: the material's highlight.
+    // The specular term: the material's highlight. Without a specular colour it is 0 whatever
+    // the lobe (a value in [0, 1]), whose power is then not worth computing: the same colour,
+    // bit for bit, for most of a scene's surfaces, and the cost of a soft shadow's samples.
     let spec = match material.model {
+        _ if material.specular == Color::ZERO => 0.0,
         Specular::Phong => phong_specular(n, l, v, material.exponent),
         Specular::Blinn => blinn_specular(n, l, v, material.exponent),
     };
