@@ -35,6 +35,7 @@ impl Hit {
     /// there is 6·10⁷; found by the bad-scenes fuzz test of `grader render`).
     /// Such a hit, whose surface orientation is lost, faces the ray head-on:
     /// normal −d̂, or +z for a ray without a direction.
+    #[inline]
     pub fn new(ray: &Ray, t: Float, outward_normal: Vec3) -> Self {
         debug_assert!(outward_normal.is_finite(), "Hit::new needs a finite normal, found {outward_normal}");
         let lost = || (-ray.dir).try_normalize().unwrap_or(Vec3::Z);
@@ -43,6 +44,7 @@ impl Hit {
 
     /// [`Hit::new`] for an outward normal `n` already normalised (its
     /// `try_normalize` done by the caller, once, and reused): the same record.
+    #[inline]
     pub fn facing(ray: &Ray, t: Float, n: Vec3) -> Self {
         let front_face = ray.dir.dot(n) < 0.0;
         Self {

@@ -31,6 +31,7 @@ pub const UNIT_ROUNDOFF: Float = Float::EPSILON * 0.5;
 
 /// γₙ = n·u / (1 − n·u): the bound on the relative error of n successive
 /// roundings (Higham; pbrt §6.8). Used for conservative bounds.
+#[inline]
 pub const fn gamma(n: i32) -> Float {
     let nu = n as Float * UNIT_ROUNDOFF;
     nu / (1.0 - nu)

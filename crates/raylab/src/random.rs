@@ -20,11 +20,13 @@ pub struct Rng {
 
 impl Rng {
     /// A generator whose sequence is fixed by `seed`.
+    #[inline]
     pub const fn new(seed: u64) -> Self {
         Self { state: seed }
     }
 
     /// The next 64 uniformly distributed bits.
+    #[inline]
     pub fn next_u64(&mut self) -> u64 {
         self.state = self.state.wrapping_add(0x9E37_79B9_7F4A_7C15);
         let mut z = self.state;
@@ -36,6 +38,7 @@ impl Rng {
     /// Uniform in [0, 1): the top p bits of [`Rng::next_u64`] times 2⁻ᵖ, p the
     /// precision of `Float` (24 bits for f32, 53 for f64), so every value is
     /// exact and the largest is 1 − 2⁻ᵖ < 1.
+    #[inline]
     pub fn next_float(&mut self) -> Float {
         const BITS: u32 = Float::MANTISSA_DIGITS;
         let scale = 1.0 / (1u64 << BITS) as Float;

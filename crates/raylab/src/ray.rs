@@ -14,6 +14,7 @@ pub struct Ray {
 }
 
 impl Ray {
+    #[inline]
     pub const fn new(origin: Vec3, dir: Vec3) -> Self {
         Self { origin, dir }
     }
@@ -39,6 +40,7 @@ impl Interval {
     /// Everything in front of the origin: (0, ∞).
     pub const POSITIVE: Interval = Interval { min: 0.0, max: Float::INFINITY };
 
+    #[inline]
     pub const fn new(min: Float, max: Float) -> Self {
         Self { min, max }
     }
