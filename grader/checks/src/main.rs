@@ -5,9 +5,9 @@
 //! (`raylab_checks_core::cli`): this crate, compiled again after every edit of
 //! a lecture, holds only the table of lectures (`lectures/mod.rs`) and the tools.
 //!
-//! `render`, `bless`, `bench-rays` and `tradeoffs` are the tools of `grader render`,
-//! `grader bless`, `grader bench-rays` and `grader tradeoffs`, built with the feature
-//! `tools` (every lecture; the grader asks for it for them, not to grade).
+//! `render`, `bless` and `bench-rays` are the tools of `grader render`, `grader bless` and
+//! `grader bench-rays` (`tools/`), built with the feature `tools` (every lecture; the grader
+//! asks for it for them, not to grade).
 
 // Built with some lectures only (those that compile), parts of the crate go unused:
 // that is expected and not worth a warning in the student's terminal.

@@ -128,6 +128,11 @@ pub fn main(catalogue: &Catalogue) -> ExitCode {
             })
         }
     };
+    exit(result)
+}
+
+/// How a command ends: its exit code, or its error printed and a failure (the tools' too).
+pub fn exit(result: Result<ExitCode, String>) -> ExitCode {
     result.unwrap_or_else(|message| {
         eprintln!("error: {message}");
         ExitCode::FAILURE

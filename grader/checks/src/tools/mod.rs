@@ -66,13 +66,7 @@ pub fn main() -> Option<ExitCode> {
         Tool::Tradeoffs(args) => tradeoffs::tradeoffs(&args),
         // INSTRUCTOR END
     };
-    Some(result.map_or_else(
-        |message| {
-            eprintln!("error: {message}");
-            ExitCode::FAILURE
-        },
-        |()| ExitCode::SUCCESS,
-    ))
+    Some(raylab_checks_core::cli::exit(result.map(|()| ExitCode::SUCCESS)))
 }
 
 #[cfg(test)]
