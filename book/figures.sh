@@ -2,12 +2,14 @@
 # Copies the reference images the book shows into book/src/figures/.
 # Source: the lectures' snapshots, which `cargo run -p grader -- bless`
 # regenerates from the reference solutions: lectures/NN-name/snapshots/
-# SCENE.final.png (the complete tracer) becomes the figure NN-SCENE.png (NN =
-# the lecture = the chapter; lecture 10's own SCENE.png is its final picture);
 # SCENE.png (lecture NN's stage: what a student sees once lecture NN is done)
-# becomes NN-SCENE.stage.png; other snapshots (SCENE.id) keep their name. Depth and
-# normal figures (NN-SCENE.depth.png, .normal.png) are rendered by the
-# reference with `grader render --aov` (it builds the workspace if needed).
+# becomes NN-SCENE.stage.png (NN = the lecture = the chapter); lecture 10's own
+# SCENE.png, its final picture, becomes NN-SCENE.png; other snapshots (SCENE.id)
+# keep their name. The complete tracer's picture of an earlier lecture's scene
+# (NN-SCENE.png) is rendered by the reference at the scene's size with `grader
+# render --stage 10` (the graded SCENE.final.png is drawn at half the width and
+# height), and the depth and normal figures (NN-SCENE.depth.png, .normal.png)
+# with `grader render --aov` (it builds the workspace if needed).
 # Run from anywhere: sh book/figures.sh
 #
 # sh book/figures.sh --check   changes nothing; fails (exit 1) naming every
@@ -44,24 +46,31 @@ put() { # lecture-folder snapshot-file figure-file
         problems=$((problems + 1))
     fi
 }
-# render lecture-folder scene aov: the scene's depth or normal image as a
-# viewable PNG (`grader render --aov depth|normal -o X.png`), rendered afresh
-# by the reference (in --check too: compared with the committed figure).
+# render lecture-folder scene figure-file grader-render-flags…: the scene
+# drawn by `grader render FLAGS -o X.png` (the complete tracer's picture with
+# `--stage 10`, the depth or normal image as a viewable PNG with `--aov`),
+# rendered afresh by the reference (in --check too: compared with the
+# committed figure).
 render() {
-    lecture=$1; scene=$2; aov=$3
-    n=$(echo "$lecture" | cut -c1-2)
-    dst="$out/$n-$scene.$aov.png"
-    listed="$listed $n-$scene.$aov.png"
+    lecture=$1; scene=$2; figure=$3; shift 3
+    dst="$out/$figure"
+    listed="$listed $figure"
     tmp=$(mktemp --suffix=.png)
-    (cd "$root" && cargo run -q -p grader -- render "lectures/$lecture/scenes/$scene.toml" --aov "$aov" -o "$tmp") >/dev/null
+    # cargo's and the grader's build lines only where the render fails.
+    if ! (cd "$root" && cargo run -q -p grader -- render "lectures/$lecture/scenes/$scene.toml" "$@" -o "$tmp") \
+        >/dev/null 2>"$tmp.err"; then
+        cat "$tmp.err" >&2
+        exit 1
+    fi
+    rm -f "$tmp.err"
     if ! $check; then
         mkdir -p "$out"
         cp "$tmp" "$dst"
     elif [ ! -f "$dst" ]; then
-        echo "figures: missing book/src/figures/$n-$scene.$aov.png (grader render --aov $aov)"
+        echo "figures: missing book/src/figures/$figure (grader render $*)"
         problems=$((problems + 1))
     elif ! cmp -s "$tmp" "$dst"; then
-        echo "figures: stale book/src/figures/$n-$scene.$aov.png (differs from a fresh grader render --aov $aov)"
+        echo "figures: stale book/src/figures/$figure (differs from a fresh grader render $*)"
         problems=$((problems + 1))
     fi
     rm -f "$tmp"
@@ -78,12 +87,13 @@ for figure in $shown; do
     name=${name%.png}
     case "$name" in
         *.stage) put "$lecture" "${name%.stage}.png" "$figure" ;;
-        *.depth | *.normal) render "$lecture" "${name%.*}" "${name##*.}" ;;
+        *.depth | *.normal) render "$lecture" "${name%.*}" "$figure" --aov "${name##*.}" ;;
         *)
-            # The complete tracer's picture where there is one (lectures 01–09), else the
-            # snapshot itself (lecture 10's own scenes, geometry images such as SCENE.id).
+            # The complete tracer's picture at the scene's size where its graded final picture
+            # is (lectures 01–09), else the snapshot itself (lecture 10's own scenes, geometry
+            # images such as SCENE.id).
             if [ -f "$root/lectures/$lecture/snapshots/$name.final.png" ]; then
-                put "$lecture" "$name.final.png" "$figure"
+                render "$lecture" "$name" "$figure" --stage 10
             else
                 put "$lecture" "$name.png" "$figure"
             fi
@@ -120,4 +130,4 @@ if [ "$problems" -gt 0 ]; then
     echo "figures: $problems problem(s); regenerate with: sh book/figures.sh"
     exit 1
 fi
-echo "figures: all $(echo $listed | wc -w) figures match their snapshots"
+echo "figures: all $(echo $listed | wc -w) figures match their snapshots and renders"

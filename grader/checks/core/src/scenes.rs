@@ -4,6 +4,10 @@
 //! (`S.id.png`, `S.depth.exr`, `S.normal.exr`), and at the report's grid of pixels the ray trees
 //! (`S.trees.json`, `S.final.trees.json`) and the calls on the picture's path (`S.calls.json`,
 //! `S.final.calls.json`). A leaf: it knows no stage and no check.
+//!
+//! The final pictures (an earlier lecture's scene drawn by the complete tracer) are drawn at half
+//! the scene's width and height ([`SceneFile::drawn_by`]): a quarter of the pixels, and of lecture
+//! 10's grade (41 scenes drawn again by the student's own code, on every try).
 
 use std::path::{Path, PathBuf};
 
@@ -26,7 +30,25 @@ impl SceneFile {
     pub fn snapshot(&self, suffix: &str) -> PathBuf {
         self.snapshots.join(format!("{}{suffix}", self.name()))
     }
+
+    /// The scene as stage `stage` draws it: as the file says at its own lecture's stage; at
+    /// another's (the complete tracer's final picture of an earlier lecture's scene) at
+    /// 1/[`FINAL_SHRINK`] of its width and height, rounded up, the camera's view the same (the
+    /// pixel grid is coarser, the picture is not cropped). Its own lecture's picture grades each
+    /// exercise at full size; the final picture grades the complete tracer's code on the scene,
+    /// for a quarter of the drawing.
+    pub fn drawn_by(&self, stage: &str) -> Result<raylab::Scene, raylab::scene::SceneError> {
+        let mut scene = raylab::scene::load(&self.scene)?;
+        if stage != self.lecture {
+            scene.width = scene.width.div_ceil(FINAL_SHRINK);
+            scene.height = scene.height.div_ceil(FINAL_SHRINK);
+        }
+        Ok(scene)
+    }
 }
+
+/// How much smaller a final picture is than its lecture's, in width and in height.
+pub const FINAL_SHRINK: u32 = 2;
 
 /// The workspace root: this crate lives in `<root>/grader/checks/core`.
 pub fn workspace_root() -> PathBuf {

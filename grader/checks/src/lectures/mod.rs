@@ -175,8 +175,8 @@ mod tests {
         let (mut wrong, mut reseeded) = (Vec::new(), Vec::new());
         let f64_build = size_of::<raylab::Float>() == 8;
         for file in scene_files(None).unwrap() {
-            let scene = raylab::scene::load(&file.scene).unwrap();
             for stage in stages::drawing(&file) {
+                let scene = file.drawn_by(stage).unwrap();
                 let path = calls_snapshot(&file, stage);
                 let has_calls = matches!(stage, "05" | "06" | "07" | "08" | "10");
                 let Ok(text) = std::fs::read_to_string(&path) else {

@@ -34,25 +34,29 @@ fn bless_calls(file: &SceneFile, stage: &str, scene: &Scene) -> Result<(), Strin
 
 /// `grader bless`: writes every scene's snapshots (or one lecture's) from
 /// the current code: `S.png` by the scene's stage, `S.final.png` by the
-/// complete tracer (scenes of lectures 01–09), and the geometry images.
+/// complete tracer (scenes of lectures 01–09, at the final pictures' size:
+/// `SceneFile::drawn_by`), and the geometry images.
 #[cfg(feature = "complete")]
 pub fn bless(only: Option<&str>) -> Result<(), String> {
     use crate::lectures::l10::tracer::{Aov, render_scene, scene_sampling, scene_settings};
     for file in scene_files(only)? {
-        let scene = raylab::scene::load(&file.scene).map_err(|e| e.to_string())?;
-        let settings = scene_settings(&scene);
+        let load = |stage| file.drawn_by(stage).map_err(|e| e.to_string());
+        let scene = load(&file.lecture)?;
         std::fs::create_dir_all(&file.snapshots).map_err(|e| format!("{}: {e}", file.snapshots.display()))?;
         let error = |e: raylab::ImageError| e.to_string();
-        let render =
-            |aov| render_scene(&scene, aov, &settings, scene_sampling(&scene)).map(|(image, _)| image);
+        let render = |scene: &Scene, aov| {
+            render_scene(scene, aov, &scene_settings(scene), scene_sampling(scene)).map(|(image, _)| image)
+        };
         stages::render(&file.lecture, &scene)?.save_png(file.snapshot(".png")).map_err(error)?;
         if file.lecture != FINAL_STAGE {
-            render(None)?.save_png(file.snapshot(".final.png")).map_err(error)?;
+            render(&load(FINAL_STAGE)?, None)?.save_png(file.snapshot(".final.png")).map_err(error)?;
         }
         for stage in stages::drawing(&file) {
+            let scene = load(stage)?;
             bless_trees(&file, stage, &scene)?;
             bless_calls(&file, stage, &scene)?;
         }
+        let render = |aov| render(&scene, aov);
         render(Some(Aov::Id))?.save_png(file.snapshot(".id.png")).map_err(error)?;
         render(Some(Aov::Depth))?.save_exr(file.snapshot(".depth.exr")).map_err(error)?;
         render(Some(Aov::Normal))?.save_exr(file.snapshot(".normal.exr")).map_err(error)?;
@@ -104,8 +108,8 @@ mod tests {
         let mut checked = 0;
         let mut wrong = Vec::new();
         for file in scene_files(None).unwrap() {
-            let scene = raylab::scene::load(&file.scene).unwrap();
             for stage in stages::drawing(&file) {
+                let scene = file.drawn_by(stage).unwrap();
                 let path = trees_snapshot(&file, stage);
                 let Ok(text) = std::fs::read_to_string(&path) else {
                     wrong.push(format!("{}: missing (grader bless)", path.display()));

@@ -78,8 +78,11 @@ fn compare_with_snapshot(
 /// pictures compared and the report's images written by the judge alone (`judge::judge_only`), which
 /// tells the subject only which of those it needs next (`judge::decide`).
 pub(super) fn check_image(file: &SceneFile, stage: &str, dir: &Path) -> CheckResult {
-    let case = format!("{}/{}", file.folder, file.name());
-    let scene = raylab::scene::load(&file.scene).map_err(|e| fail(&case, "the scene loads", e, ""))?;
+    let mut case = format!("{}/{}", file.folder, file.name());
+    let scene = file.drawn_by(stage).map_err(|e| fail(&case, "the scene loads", e, ""))?;
+    if stage != file.lecture {
+        case += &format!(" (the final picture, {}×{})", scene.width, scene.height);
+    }
     let yours =
         judge::student(|| stages::render(stage, &scene)).map_err(|e| fail(&case, "an image", e, ""))?;
     let compared = judge::judge_only(|| compare_with_snapshot(file, stage, &yours, dir));
@@ -108,9 +111,16 @@ pub(super) fn check_image(file: &SceneFile, stage: &str, dir: &Path) -> CheckRes
     let cause = if draws == Some(Draws::Sky) {
         judge::judge_only(|| camera_diagnosis(&yours))
     } else {
-        let geometry = student_geometry(&file.lecture, &scene);
-        let geometry = judge::judge_only(|| geometry_difference(file, &scene, geometry));
+        // The geometry against its snapshots, at the scene's own size (a final picture's is smaller).
+        let full = if stage == file.lecture { None } else { raylab::scene::load(&file.scene).ok() };
+        let geometry_scene = full.as_ref().unwrap_or(&scene);
+        let geometry = student_geometry(&file.lecture, geometry_scene);
+        let geometry = judge::judge_only(|| geometry_difference(file, geometry_scene, geometry));
         let matches = judge::decide(|| matches!(geometry, Some(Ok(None))));
+        // Where the differing pixels lie: the snapshots' geometry; for a final picture, at its
+        // size, the student's, which matched them at full size.
+        let small =
+            if matches && full.is_some() { student_geometry(&file.lecture, &scene).ok() } else { None };
         // The student's eye rays, to find where the differing pixels' surfaces face the lights.
         let rays = if matches { judge::student(|| camera_rays(&scene)) } else { None };
         let calls = if matches { judge::student(|| stages::calls(stage, &scene, at)) } else { None };
@@ -130,7 +140,7 @@ pub(super) fn check_image(file: &SceneFile, stage: &str, dir: &Path) -> CheckRes
             Some(Ok(None)) => {
                 let expected = compared.as_ref().and_then(|c| c.as_ref().ok()).map(Compared::expected);
                 let seen = expected.map(|expected| {
-                    shading_diagnosis(stage, file, &scene, expected, &yours, rays.as_deref())
+                    shading_diagnosis(stage, file, &scene, (expected, &yours), small, rays.as_deref())
                 });
                 // The exercise whose value differs first on the path, with a symptom the whole
                 // picture shows (a guess from the picture would only blur the name); without
@@ -356,16 +366,17 @@ mod tests {
     }
 
     /// The report's budget: a failed scene's 3D view is at most 4 MB of data (the largest, 06's
-    /// soft-shadows-64 at stage 10, holds 64 shadow rays from each hit: 3.2 MB), and the views of
-    /// all 87 image checks — a grade where every one fails — at most 24 MB together (21.6 MB;
-    /// the page loads one view's when it is opened). Measured on the views with the blessed
+    /// soft-shadows-64 at stage 10, holds 64 shadow rays from each hit: 0.96 MB at the final
+    /// picture's half size, 3.2 MB when it was drawn at full size), and the views of all 87 image
+    /// checks — a grade where every one fails — at most 24 MB together (14.8 MB; 21.6 MB with
+    /// full-size final pictures; the page loads one view's when it is opened). Measured on the views with the blessed
     /// trees as both expected and yours, as a failed scene's are made.
     #[test]
     fn the_report_s_views_keep_to_their_budget() {
         let (mut total, mut largest) = (0, (0, String::new()));
         for file in scene_files(None).unwrap() {
-            let scene = raylab::scene::load(&file.scene).unwrap();
             for stage in stages::drawing(&file) {
+                let scene = file.drawn_by(stage).unwrap();
                 let blessed: GridTrees =
                     serde_json::from_str(&std::fs::read_to_string(trees_snapshot(&file, stage)).unwrap())
                         .unwrap();
