@@ -90,8 +90,12 @@ pub fn main(catalogue: &Catalogue) -> ExitCode {
     // The stages' code, lent by the lectures built: no student code runs to collect it.
     (catalogue.install)();
     let result = match cli.command {
+        // Written, not printed: a reader that stops early (`| head`) ends the listing, not a panic.
         Command::List => serde_json::to_string_pretty(&listed(catalogue))
-            .map(|json| println!("{json}"))
+            .map(|json| {
+                use std::io::Write;
+                let _ = writeln!(std::io::stdout(), "{json}");
+            })
             .map(|()| ExitCode::SUCCESS)
             .map_err(|e| e.to_string()),
         Command::Run { id, verdict, out, channel } => match (channel, verdict) {
