@@ -3,7 +3,8 @@
 of book/browsercheck.py) and checks that it works offline:
   - every <img> loaded (expected / yours / difference of each scene), at least three;
   - no request went anywhere but file:// (or data:);
-  - clicking a pixel of a scene's image shows the command that prints its ray tree;
+  - clicking a pixel of a scene's image shows the command that prints its ray tree, for a final
+    picture (drawn smaller than its scene) at the picture's size (`--size WxH`);
   - the ray tree of the first differing pixel of a failed scene is in the page;
   - a failed scene's 3D view (at stages that trace a ray tree) opens by itself, its WebGL canvas
     draws (pixels not all background), and a click on the scene's "yours" image far from the
@@ -33,6 +34,15 @@ PROBE = r"""
     scene.dispatchEvent(new MouseEvent('click', {clientX: rect.left + rect.width / 2,
                                                  clientY: rect.top + rect.height / 2, bubbles: true}));
     picked = document.getElementById('picked').textContent;
+  }
+  // A final picture's click: its command draws the scene at the picture's size.
+  const final = document.querySelector('td[data-final] img');
+  let pickedFinal = null;
+  if (final) {
+    const rect = final.getBoundingClientRect();
+    final.dispatchEvent(new MouseEvent('click', {clientX: rect.left + 1, clientY: rect.top + 1, bubbles: true}));
+    pickedFinal = {text: document.getElementById('picked').textContent,
+                   size: final.naturalWidth + 'x' + final.naturalHeight};
   }
   // The first 3D view: open by itself; its data is a script loaded from beside the images.
   const frame = () => new Promise(r => requestAnimationFrame(() => r()));
@@ -82,6 +92,7 @@ PROBE = r"""
     images: images.length,
     broken: images.filter(i => !(i.complete && i.naturalWidth > 0)).map(i => i.getAttribute('src')),
     picked: picked,
+    pickedFinal,
     trees: document.querySelectorAll('pre.tree').length,
     failed: document.querySelectorAll('tr.failed').length,
   });
@@ -116,6 +127,9 @@ def main():
             failures += [f"image not loaded: {src}" for src in r["broken"]]
             if "--tree" not in r["picked"]:
                 failures.append(f"clicking a pixel shows {r['picked']!r}, not the ray-tree command")
+            f = r["pickedFinal"]
+            if f is not None and f" --size {f['size']} --tree " not in f["text"]:
+                failures.append(f"clicking a final picture shows {f['text']!r}, not drawn at its size {f['size']}")
             if r["failed"] and not r["trees"]:
                 failures.append("a failed scene without the ray tree of its first differing pixel")
             v = r["view"]
@@ -130,7 +144,8 @@ def main():
                     failures.append(f"a click on 'yours' did not change the trees drawn: {v}")
             failures += [f"the page requested {url}" for url in browser.requests_elsewhere()]
             print(f"report: {r['images']} images, {r['failed']} failed rows, {r['trees']} ray trees, "
-                  f"{r['views']} 3D views; click: {r['picked']}")
+                  f"{r['views']} 3D views; click: {r['picked']}"
+                  + (f"; a final picture's click: {f['text']}" if f else ""))
             if v is not None and v.get("loaded"):
                 print(f"3D view: {v['drawn']} pixels drawn; pixel {v['pixelBefore']} -> {v['pixelAfter']} "
                       f"({v['changed']} canvas pixels changed): {v['caption']}")

@@ -31,7 +31,9 @@ for (const img of document.querySelectorAll('td[data-scene] img')) {
     const scene = cell.dataset.scene;
     const box = document.getElementById('picked');
     box.hidden = false;
-    box.textContent = 'pixel (' + x + ', ' + y + '): cargo run -p grader -- render ' + scene + ' --tree ' + x + ',' + y +
+    // A final picture is drawn at a fraction of its scene's size: the command draws it at its own.
+    const size = 'final' in cell.dataset ? ' --size ' + img.naturalWidth + 'x' + img.naturalHeight : '';
+    box.textContent = 'pixel (' + x + ', ' + y + '): cargo run -p grader -- render ' + scene + size + ' --tree ' + x + ',' + y +
       ' (add --view tree.html for its page in 3D)';
     const view = cell.querySelector('details[data-view]');
     if (view) {

@@ -175,12 +175,14 @@ fn images_row(body: &mut String, ws: &Workspace, v: &Verdict, out: &Path) {
     let tree = std::fs::read_to_string(scene_dir.join("tree.txt")).unwrap_or_default();
     let _ = writeln!(
         body,
-        "<tr class=\"images\"><td colspan=\"4\" data-scene=\"{}\">\
+        "<tr class=\"images\"><td colspan=\"4\" data-scene=\"{}\"{}>\
          <figure><img src=\"{}\" alt=\"expected\"><figcaption>expected</figcaption></figure>\
          <figure><img src=\"{}\" alt=\"yours\"><figcaption>yours</figcaption></figure>\
          <figure><img src=\"{}\" alt=\"difference (FLIP)\"><figcaption>difference (FLIP), mean {}</figcaption></figure>\
          <p class=\"hint\">Click a pixel for the command that prints its ray tree{}.</p>{}{}</td></tr>",
         escape(&scene),
+        // A final picture is drawn smaller than its scene: the click's command draws it at its size.
+        if v.info.exercise == "final" { " data-final" } else { "" },
         relative("expected.png"),
         relative("yours.png"),
         relative("diff.png"),
