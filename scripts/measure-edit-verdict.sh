@@ -14,10 +14,59 @@
 #   scripts/measure-edit-verdict.sh --debuginfo the relink after an edit and a cold build of the
 #                                               checks, with the workspace's debug info against
 #                                               full debug info everywhere (~3 minutes)
+#   scripts/measure-edit-verdict.sh --student   the same table in a student's tree: the handout
+#                                               (`grader handout`, in STUDENT_DIR or a temporary
+#                                               folder) with the reference's solutions put back,
+#                                               the instructors' parts left out as the handout
+#                                               leaves them, and where a solution calls those
+#                                               (lecture 09's traversal calls fast.rs) the accepted
+#                                               answer of tests/mistakes/ that does without
 #
 # The lectures' files are put back as they were (their contents; their times set in the past).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+
+if [ "${1:-}" = "--student" ]; then
+  dir=${STUDENT_DIR:-$(mktemp -d)/student}
+  cargo run -q -p grader -- handout "$dir"
+  python3 - "$dir" <<'PY'
+import glob, os, sys, tomllib
+dir = sys.argv[1]
+def without_instructor(text):
+    # The handout's rule (grader/src/handout.rs): comment lines ending in INSTRUCTOR BEGIN / END
+    # and what lies between them go.
+    kept, inside = [], False
+    for line in text.split("\n"):
+        t = line.strip()
+        marker = t.startswith("//") or t.startswith("#")
+        if marker and t.endswith("INSTRUCTOR BEGIN"):
+            inside = True
+        elif marker and t.endswith("INSTRUCTOR END"):
+            inside = False
+        elif not inside:
+            kept.append(line)
+    return "\n".join(kept)
+for path in glob.glob("lectures/*/src/**/*.rs", recursive=True):
+    if os.path.exists(os.path.join(dir, path)):
+        with open(os.path.join(dir, path), "w") as f:
+            f.write(without_instructor(open(path).read()))
+for catalogue in sorted(glob.glob("tests/mistakes/*.toml")):
+    for answer in tomllib.load(open(catalogue, "rb")).get("accepted", []):
+        if "crate::fast" in answer["find"]:
+            path = os.path.join(dir, answer["file"])
+            text = open(path).read()
+            assert text.count(answer["find"]) == 1, answer["name"]
+            open(path, "w").write(text.replace(answer["find"], answer["replace"]))
+PY
+  mkdir -p "$dir/scripts"
+  cp "$0" "$dir/scripts/"
+  if ! (cd "$dir" && cargo run -q -p grader -- --strict > /dev/null); then
+    echo "the student's tree does not pass its checks: cd $dir && cargo run -p grader" >&2
+    exit 1
+  fi
+  echo "a student's tree, every check passing: $dir"
+  exec bash "$dir/scripts/$(basename "$0")"
+fi
 
 if [ "${1:-}" = "--debuginfo" ]; then
   lib=lectures/04-quadrics-transforms/src/lib.rs
