@@ -216,8 +216,9 @@ mod tests {
             "{files} files, {pixels} pixels; in f64, reseeded area-light samples at:\n{}",
             reseeded.join("\n")
         );
-        // Measured: one pixel of 8565 (06's soft-shadows-sphere at (168, 88), at stages 06 and
-        // 10), where a failed picture's cause in an f64 build could name 06/stratified wrongly.
+        // Measured: one pixel of 4896 (06's soft-shadows-sphere at (168, 88), at stage 06; with
+        // full-size final pictures, of 8565, at stage 10 too), where a failed picture's cause in an
+        // f64 build could name 06/stratified wrongly.
         assert!(reseeded.len() <= 2, "{} pixels reseeded:\n{}", reseeded.len(), reseeded.join("\n"));
         // Lectures 05–08's 24 scenes at their own stage, the 41 of lectures 01–09 and the 5 of 10 at stage 10.
         assert_eq!(files, 24 + 41 + 5);

@@ -78,9 +78,11 @@ fn compare_with_snapshot(
 /// pictures compared and the report's images written by the judge alone (`judge::judge_only`), which
 /// tells the subject only which of those it needs next (`judge::decide`).
 pub(super) fn check_image(file: &SceneFile, stage: &str, dir: &Path) -> CheckResult {
+    // A final picture: another lecture's scene, drawn smaller than the file says (`drawn_by`).
+    let is_final = stage != file.lecture;
     let mut case = format!("{}/{}", file.folder, file.name());
     let scene = file.drawn_by(stage).map_err(|e| fail(&case, "the scene loads", e, ""))?;
-    if stage != file.lecture {
+    if is_final {
         case += &format!(" (the final picture, {}×{})", scene.width, scene.height);
     }
     let yours =
@@ -112,7 +114,7 @@ pub(super) fn check_image(file: &SceneFile, stage: &str, dir: &Path) -> CheckRes
         judge::judge_only(|| camera_diagnosis(&yours))
     } else {
         // The geometry against its snapshots, at the scene's own size (a final picture's is smaller).
-        let full = if stage == file.lecture { None } else { raylab::scene::load(&file.scene).ok() };
+        let full = if is_final { raylab::scene::load(&file.scene).ok() } else { None };
         let geometry_scene = full.as_ref().unwrap_or(&scene);
         let geometry = student_geometry(&file.lecture, geometry_scene);
         let geometry = judge::judge_only(|| geometry_difference(file, geometry_scene, geometry));
@@ -369,8 +371,8 @@ mod tests {
     /// soft-shadows-64 at stage 10, holds 64 shadow rays from each hit: 0.96 MB at the final
     /// picture's half size, 3.2 MB when it was drawn at full size), and the views of all 87 image
     /// checks — a grade where every one fails — at most 24 MB together (14.8 MB; 21.6 MB with
-    /// full-size final pictures; the page loads one view's when it is opened). Measured on the views with the blessed
-    /// trees as both expected and yours, as a failed scene's are made.
+    /// full-size final pictures; the page loads one view's when it is opened). Measured on the
+    /// views with the blessed trees as both expected and yours, as a failed scene's are made.
     #[test]
     fn the_report_s_views_keep_to_their_budget() {
         let (mut total, mut largest) = (0, (0, String::new()));
