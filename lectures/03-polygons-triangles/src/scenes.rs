@@ -23,7 +23,7 @@ fn trace(scene: &Scene, ray: &Ray, range: Interval) -> Option<Hit> {
 }
 
 /// The closest hit of every pixel's primary ray, row-major, at the scene's
-/// size, or half of it for scenes with meshes (brute force over 336
+/// size, or half of it for scenes with meshes (brute force over 224
 /// triangles per ray is slow in a debug build; every object stays in view).
 fn primary_hits(scene: &Scene) -> Vec<Option<Hit>> {
     let has_mesh = scene.objects.iter().any(|o| matches!(o.shape, Shape::Mesh(_)));
