@@ -9,11 +9,12 @@ pub(super) use raylab::scene::Mesh;
 pub(super) use raylab::{Float, Hit, Interval, Ray, Vec2, Vec3};
 
 pub(super) use crate::check::{
-    CheckResult, Failure, close, close3, ensure, fail, maybe, near3, num, ray, show_hit, show_ray, show_span,
-    vec3,
+    CheckResult, Failure, close, close3, ensure, fail, lazy, maybe, near3, num, ray, show_hit, show_ray,
+    show_span, vec3,
 };
 pub(super) use raylab_testing::boxes::{GridRay, grid_ray, sixteenths};
 pub(super) use raylab_testing::exact::{Ratio, exact_span};
+pub(super) use std::fmt::Display;
 
 // The student's functions, each value taken through `judge::student` (the lecture is `judged`).
 crate::rows::student_fns! { l03_polygons_triangles:

@@ -9,17 +9,20 @@ pub(super) fn mesh_no_leaks(hit_mesh: MeshFn) -> CheckResult {
         for r in &rays {
             total += 1;
             let got = hit_mesh(r, &mesh, ALL);
-            let case = format!(
-                "a closed mesh of {} triangles around the origin, {} (aimed at a vertex or an edge)",
-                mesh.triangles.len(),
-                show_ray(r)
-            );
+            let case = lazy(|f| {
+                let n = mesh.triangles.len();
+                write!(
+                    f,
+                    "a closed mesh of {n} triangles around the origin, {} (aimed at a vertex or an edge)",
+                    show_ray(r)
+                )
+            });
             let Some(h) = got else { return Err(fail(case, "a hit", "None (no hit)", LEAK)) };
             ensure(
                 h.t.is_finite() && h.t > 0.0 && h.normal.is_finite(),
                 case,
                 "a finite hit",
-                show_hit(&got),
+                lazy(|f| f.write_str(&show_hit(&got))),
                 "no NaN may escape a hit",
             )?;
         }

@@ -124,12 +124,12 @@ pub(super) fn slabs_cases(hit_slabs: SlabsFn) -> CheckResult {
 }
 
 pub(super) fn slabs_extreme(hit_slabs: SlabsFn) -> CheckResult {
-    let no_nan = |case: &str, got: Option<(Float, Float)>| {
+    let no_nan = |case: &dyn Display, got: Option<(Float, Float)>| {
         ensure(
             got.is_none_or(|(a, b)| !a.is_nan() && !b.is_nan() && a <= b),
             case,
             "no NaN, t0 ≤ t1",
-            show_span(&got),
+            lazy(|f| f.write_str(&show_span(&got))),
             NAN_PLANE,
         )
     };
@@ -224,14 +224,10 @@ pub(super) fn slabs_extreme(hit_slabs: SlabsFn) -> CheckResult {
         let d = if n % 4 == 3 { d.map(|c| -c) } else { d };
         let r = Ray::new(sixteenths(o), sixteenths(d));
         let got = hit_slabs(&r, sixteenths(lo), sixteenths(hi), range);
-        let case = format!(
-            "box {}..{}, {}, range ({}, {})",
-            vec3(sixteenths(lo)),
-            vec3(sixteenths(hi)),
-            show_ray(&r),
-            num(range.min),
-            num(range.max)
-        );
+        let case = lazy(|f| {
+            let (lo, hi) = (vec3(sixteenths(lo)), vec3(sixteenths(hi)));
+            write!(f, "box {lo}..{hi}, {}, range ({}, {})", show_ray(&r), num(range.min), num(range.max))
+        });
         no_nan(&case, got)?;
         let exact = exact_span(o, d, lo, hi);
         let hits =
@@ -266,7 +262,7 @@ pub(super) fn slabs_extreme(hit_slabs: SlabsFn) -> CheckResult {
 /// min(exit, max) and not below it (the widened exit is conservative), relative to enter and
 /// exit. Clipping is 1-Lipschitz, so a clipped end is no farther off than the end it clips.
 fn exact_ends(
-    case: &str,
+    case: &dyn Display,
     (enter, exit): (Ratio, Ratio),
     min: Ratio,
     max: Option<Ratio>,

@@ -6,8 +6,8 @@ pub(super) use raylab::scene::Transform;
 pub(super) use raylab::{Float, Hit, Interval, Mat4, Ray, Vec2, Vec3};
 
 pub(super) use crate::check::{
-    CheckResult, Failure, close, close3, ensure, fail, maybe, near3, num, ray, show_hit, show_ray, show_span,
-    vec3,
+    CheckResult, Failure, close, close3, ensure, fail, lazy, maybe, near3, num, ray, show_hit, show_ray,
+    show_span, vec3,
 };
 
 // The student's functions, each value taken through `judge::student` (the lecture is `judged`).

@@ -43,7 +43,8 @@ crate::rows::student_fns! { l06_shadows:
 pub(super) use raylab::{BLACK, Color, Float, Hit, Intersector, Interval, Ray, Vec2, Vec3, WHITE, radians};
 pub(super) use std::sync::atomic::{AtomicUsize, Ordering};
 
-pub(super) use crate::check::{CheckResult, Failure, close3, ensure, num, v, vec3, wide, wide3};
+pub(super) use crate::check::{CheckResult, Failure, close3, ensure, lazy, num, v, vec3, wide, wide3};
+pub(super) use std::fmt::Display;
 
 pub(super) const EPS: Float = Float::EPSILON;
 

@@ -8,7 +8,7 @@ use raylab_testing::offsets::{OffsetCase, random_offset_cases};
 /// 8ε·(|p|₁ + |from|₁) ≤ 48ε·M ≤ 96 ulp(M), plus half an ulp storing it; and at
 /// least 8ε·M ≥ 8 ulp(M) of which a unit n's largest component carries 1/√3).
 pub(super) fn check_offset(
-    case: &str,
+    case: &dyn Display,
     p: Vec3,
     n: Vec3,
     from: Vec3,
@@ -20,12 +20,11 @@ pub(super) fn check_offset(
     let sideways = (step - along * n).abs().max_element();
     let m = p.abs().max_element().max(from.abs().max_element());
     let in_ulp = step.abs().max_element() / ulp(m);
-    let expected = format!(
-        "p moved along {}·n by 4 to 97 ulp of {}, at most 2 ulp sideways",
-        if side > 0.0 { "+" } else { "−" },
-        num(m)
-    );
-    let got = format!("{} ({} ulp, {} along n)", vec3(moved), num(in_ulp), num(along));
+    let expected = lazy(|f| {
+        let sign = if side > 0.0 { "+" } else { "−" };
+        write!(f, "p moved along {sign}·n by 4 to 97 ulp of {}, at most 2 ulp sideways", num(m))
+    });
+    let got = lazy(|f| write!(f, "{} ({} ulp, {} along n)", vec3(moved), num(in_ulp), num(along)));
     ensure(
         moved != p,
         case,
@@ -92,13 +91,13 @@ pub(super) fn offset_cases(offset: OffsetFn) -> CheckResult {
         ("p = (2, 0, 0), n = +x, dir = +x, found from (0, −2, 0)", Vec3::X, Vec3::X, v(0.0, -2.0, 0.0), 1.0),
     ];
     for (case, n, dir, from, side) in cases {
-        check_offset(case, p, n, from, offset(p, n, dir, from), side)?;
+        check_offset(&case, p, n, from, offset(p, n, dir, from), side)?;
     }
     // The world origin seen from the eye (0, 5, 7): p = 0, so only |from| can scale the
     // offset above the error p carries (a few ulp of 7).
     let case = "p = (0, 0, 0), n = +y, dir = +y, found from the eye (0, 5, 7)";
     let from = v(0.0, 5.0, 7.0);
-    check_offset(case, Vec3::ZERO, Vec3::Y, from, offset(Vec3::ZERO, Vec3::Y, Vec3::Y, from), 1.0)?;
+    check_offset(&case, Vec3::ZERO, Vec3::Y, from, offset(Vec3::ZERO, Vec3::Y, Vec3::Y, from), 1.0)?;
     // The world origin from the world origin: nothing to scale by, yet p must move.
     let case = "p = (0, 0, 0), n = +y, dir = +y, found from (0, 0, 0)";
     let moved = offset(Vec3::ZERO, Vec3::Y, Vec3::Y, Vec3::ZERO);
@@ -113,7 +112,8 @@ pub(super) fn offset_cases(offset: OffsetFn) -> CheckResult {
     let mut largest: Float = 0.0;
     for OffsetCase { p, n, dir, from } in random_offset_cases(100) {
         let side = if dir.dot(n) < 0.0 { -1.0 } else { 1.0 };
-        let case = format!("p = {}, n = {}, dir = {}, from {}", vec3(p), vec3(n), vec3(dir), vec3(from));
+        let case =
+            lazy(|f| write!(f, "p = {}, n = {}, dir = {}, from {}", vec3(p), vec3(n), vec3(dir), vec3(from)));
         let moved = offset(p, n, dir, from);
         check_offset(&case, p, n, from, moved, side)?;
         let m = p.abs().max_element().max(from.abs().max_element());
@@ -149,19 +149,17 @@ pub(super) fn large_coordinates(offset: OffsetFn) -> CheckResult {
             let l = rng.unit_vector();
             let l = if l.dot(n) < 0.0 { -l } else { l };
             let moved = offset(p, n, l, origin);
-            let case = format!(
-                "unit sphere at ({d:e}, {d:e}, {d:e}), hit p = {} from {}, light along {}",
-                vec3(p),
-                vec3(origin),
-                vec3(l)
-            );
+            let case = lazy(|f| {
+                let (p, origin, l) = (vec3(p), vec3(origin), vec3(l));
+                write!(f, "unit sphere at ({d:e}, {d:e}, {d:e}), hit p = {p} from {origin}, light along {l}")
+            });
             let m = wide3(moved);
             let outside = (0..3).map(|k| (m[k] - c[k]).powi(2)).sum::<f64>() > 1.0;
             ensure(
                 outside,
                 &case,
                 "a shadow ray starting outside the sphere",
-                format!("{} is inside: the sphere shadows itself", vec3(moved)),
+                lazy(|f| write!(f, "{} is inside: the sphere shadows itself", vec3(moved))),
                 "the offset must exceed the rounding error of p: 8ε·(|p|₁ + |from|₁) along n; a fixed 10⁻⁴ \
                  rounds away at 10⁴ (one ulp is 10⁻³ in f32)",
             )?;
@@ -178,13 +176,14 @@ pub(super) fn large_coordinates(offset: OffsetFn) -> CheckResult {
             let l = rng.unit_vector();
             let l = if l.y < 0.0 { -l } else { l };
             let moved = offset(p, Vec3::Y, l, eye);
-            let case =
-                format!("floor y = 0 seen from {}, hit p = {}, light along {}", vec3(eye), vec3(p), vec3(l));
+            let case = lazy(|f| {
+                write!(f, "floor y = 0 seen from {}, hit p = {}, light along {}", vec3(eye), vec3(p), vec3(l))
+            });
             ensure(
                 moved.y > 0.0,
                 &case,
                 "a shadow ray starting above the floor",
-                format!("{} is below it: the floor shadows itself", vec3(moved)),
+                lazy(|f| write!(f, "{} is below it: the floor shadows itself", vec3(moved))),
                 "scale by |p|₁ + |from|₁: here p ≈ 0 but carries the rounding error of the eye's coordinates",
             )?;
             check_offset(&case, p, Vec3::Y, eye, moved, 1.0)?;

@@ -8,7 +8,7 @@ pub(super) use raylab::random::Rng;
 pub(super) use raylab::scene::{Mesh, Object, Shape};
 pub(super) use raylab::{Float, Hit, Intersector, Interval, Mat4, Ray, Vec3};
 
-pub(super) use crate::check::{CheckResult, Failure, close, ensure, fail, maybe, num, v, vec3};
+pub(super) use crate::check::{CheckResult, Failure, close, ensure, fail, lazy, maybe, num, v, vec3};
 
 pub(super) use crate::judge::student;
 

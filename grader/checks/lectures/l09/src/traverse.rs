@@ -88,7 +88,7 @@ pub(super) fn same_closest(
     range: Interval,
     scene: &str,
 ) -> Result<bool, Failure> {
-    let case = format!("{scene}: {}", describe(r, range));
+    let case = lazy(|f| write!(f, "{scene}: {}", describe(r, range)));
     let is_plane = |e: &Hit| matches!(objects.get(e.object).map(|o| &o.shape), Some(Shape::Plane { .. }));
     match (expected, got) {
         (Some(e), Some(g)) if e.object == g.object && e.t == g.t => Ok(true),
@@ -228,7 +228,7 @@ pub(super) fn shared_edges(closest: ClosestFn) -> CheckResult {
         let hit = same_closest(&objects, pair, r, *range, "from inside an icosphere (320 triangles)")?;
         ensure(
             hit,
-            format!("from inside an icosphere: {}", describe(r, *range)),
+            lazy(|f| write!(f, "from inside an icosphere: {}", describe(r, *range))),
             "a hit",
             "None (a leak)",
             "a ray through an edge of a closed mesh must hit: widen the box test's ends (Aabb::hit) so no \
@@ -299,8 +299,8 @@ pub(super) fn any_cases(any: AnyFn) -> CheckResult {
         };
         ensure(
             got == expected.is_some(),
-            format!("60 spheres, a floor and an icosphere: {}", describe(r, *range)),
-            format!("{} ({})", expected.is_some(), show_hit(&expected)),
+            lazy(|f| write!(f, "60 spheres, a floor and an icosphere: {}", describe(r, *range))),
+            lazy(|f| write!(f, "{} ({})", expected.is_some(), show_hit(&expected))),
             got,
             cause,
         )?;

@@ -10,7 +10,7 @@ pub(super) use raylab::random::Rng;
 pub(super) use raylab::stats::{Counter, RayStats};
 pub(super) use raylab::{Color, Float, Image, Scene, Vec2, Vec3};
 
-pub(super) use crate::check::{CheckResult, Failure, ensure, fail, num, vec3};
+pub(super) use crate::check::{CheckResult, Failure, ensure, fail, lazy, num, vec3};
 
 // The student's functions, each value taken through `judge::student` (the lecture is `judged`).
 crate::rows::student_fns! { l10_textures_sampling:

@@ -150,9 +150,9 @@ pub(super) fn noise_cases(noise: NoiseFn) -> CheckResult {
         let got = noise(p);
         ensure(
             got == 0.0,
-            format!("noise at the lattice point {}", vec3(p)),
+            lazy(|f| write!(f, "noise at the lattice point {}", vec3(p))),
             "0 exactly",
-            num(got),
+            lazy(|f| f.write_str(&num(got))),
             "at a lattice point the corner's own term is g·0 and the other corners weigh fade(0) = 0",
         )?;
     }
@@ -180,9 +180,9 @@ pub(super) fn noise_cases(noise: NoiseFn) -> CheckResult {
         };
         ensure(
             (before - after).abs() < 0.011,
-            format!("noise either side of a cell face, at {} and {}", vec3(p0), vec3(p1)),
+            lazy(|f| write!(f, "noise either side of a cell face, at {} and {}", vec3(p0), vec3(p1))),
             "values within 0.011 of each other (the noise is continuous)",
-            format!("{} and {}", num(before), num(after)),
+            lazy(|f| write!(f, "{} and {}", num(before), num(after))),
             cause,
         )?;
     }
@@ -193,18 +193,18 @@ pub(super) fn noise_cases(noise: NoiseFn) -> CheckResult {
         // The bound any table of edge gradients allows (l10's NOISE_BOUND), derived in §10.3.
         ensure(
             got.abs() <= 1.0364,
-            format!("noise at {}", vec3(p)),
+            lazy(|f| write!(f, "noise at {}", vec3(p))),
             "a value in [−1.0364, 1.0364]",
-            num(got),
-            noise_cause(got, p),
+            lazy(|f| f.write_str(&num(got))),
+            lazy(|f| f.write_str(noise_cause(got, p))),
         )?;
         let error = (got as f64 - expected).abs();
         ensure(
             error <= NOISE_TOLERANCE,
-            format!("noise at {}", vec3(p)),
-            num(expected as Float),
-            num(got),
-            noise_cause(got, p),
+            lazy(|f| write!(f, "noise at {}", vec3(p))),
+            lazy(|f| f.write_str(&num(expected as Float))),
+            lazy(|f| f.write_str(&num(got))),
+            lazy(|f| f.write_str(noise_cause(got, p))),
         )?;
         worst = worst.max(error);
     }
@@ -221,9 +221,9 @@ pub(super) fn fractal_cases(fractal_noise: FractalFn) -> CheckResult {
         let got = fractal_noise(p, 0);
         ensure(
             got == 0.0,
-            format!("fractal_noise at {} with 0 octaves", vec3(p)),
+            lazy(|f| write!(f, "fractal_noise at {} with 0 octaves", vec3(p))),
             "0",
-            num(got),
+            lazy(|f| f.write_str(&num(got))),
             "no octaves sum to 0",
         )?;
     }
@@ -232,24 +232,26 @@ pub(super) fn fractal_cases(fractal_noise: FractalFn) -> CheckResult {
             let (got, expected) = (fractal_noise(p, octaves) as f64, expected_fractal(p, octaves));
             // Each octave's noise within NOISE_TOLERANCE, the sum's roundings one ε per octave.
             let tolerance = 2.0 * NOISE_TOLERANCE + octaves as f64 * 2.0 * EPS as f64;
-            let doubled = octave_sum(p, octaves, &|k| 2f64.powi(k as i32), &|k| 2f64.powi(k as i32));
-            let unscaled = octave_sum(p, octaves, &|_| 1.0, &|k| 2f64.powi(-(k as i32)));
-            let one_more = expected_fractal(p, octaves + 1);
-            let near = |x: f64| (got - x).abs() <= tolerance;
-            let cause = if near(doubled) {
-                "octave k is 2ᵏ times finer and 2ᵏ times weaker: divide its noise by 2ᵏ, not multiply"
-            } else if near(unscaled) {
-                "octave k samples the noise at 2ᵏ·p: each octave adds detail half the size"
-            } else if near(one_more) {
-                "`octaves` octaves, k = 0 … octaves − 1"
-            } else {
-                "N(p) = Σ_{k=0}^{octaves−1} noise(2ᵏ·p) / 2ᵏ"
-            };
+            // The known mistakes' sums, computed only to name a failure's cause.
+            let cause = lazy(|f| {
+                let doubled = octave_sum(p, octaves, &|k| 2f64.powi(k as i32), &|k| 2f64.powi(k as i32));
+                let unscaled = octave_sum(p, octaves, &|_| 1.0, &|k| 2f64.powi(-(k as i32)));
+                let near = |x: f64| (got - x).abs() <= tolerance;
+                f.write_str(if near(doubled) {
+                    "octave k is 2ᵏ times finer and 2ᵏ times weaker: divide its noise by 2ᵏ, not multiply"
+                } else if near(unscaled) {
+                    "octave k samples the noise at 2ᵏ·p: each octave adds detail half the size"
+                } else if near(expected_fractal(p, octaves + 1)) {
+                    "`octaves` octaves, k = 0 … octaves − 1"
+                } else {
+                    "N(p) = Σ_{k=0}^{octaves−1} noise(2ᵏ·p) / 2ᵏ"
+                })
+            });
             ensure(
                 (got - expected).abs() <= tolerance,
-                format!("fractal_noise at {} with {octaves} octaves", vec3(p)),
-                num(expected as Float),
-                num(got as Float),
+                lazy(|f| write!(f, "fractal_noise at {} with {octaves} octaves", vec3(p))),
+                lazy(|f| f.write_str(&num(expected as Float))),
+                lazy(|f| f.write_str(&num(got as Float))),
                 cause,
             )?;
         }
