@@ -190,22 +190,13 @@ pub(super) fn noise_cases(noise: NoiseFn) -> CheckResult {
     let mut worst: f64 = 0.0;
     for &p in &points {
         let (got, expected) = (noise(p), expected_noise(p));
+        let case = lazy(|f| write!(f, "noise at {}", vec3(p)));
+        let (shown, cause) = (lazy(|f| f.write_str(&num(got))), lazy(|f| f.write_str(noise_cause(got, p))));
         // The bound any table of edge gradients allows (l10's NOISE_BOUND), derived in §10.3.
-        ensure(
-            got.abs() <= 1.0364,
-            lazy(|f| write!(f, "noise at {}", vec3(p))),
-            "a value in [−1.0364, 1.0364]",
-            lazy(|f| f.write_str(&num(got))),
-            lazy(|f| f.write_str(noise_cause(got, p))),
-        )?;
+        ensure(got.abs() <= 1.0364, &case, "a value in [−1.0364, 1.0364]", &shown, &cause)?;
         let error = (got as f64 - expected).abs();
-        ensure(
-            error <= NOISE_TOLERANCE,
-            lazy(|f| write!(f, "noise at {}", vec3(p))),
-            lazy(|f| f.write_str(&num(expected as Float))),
-            lazy(|f| f.write_str(&num(got))),
-            lazy(|f| f.write_str(noise_cause(got, p))),
-        )?;
+        let wanted = lazy(|f| f.write_str(&num(expected as Float)));
+        ensure(error <= NOISE_TOLERANCE, &case, wanted, &shown, &cause)?;
         worst = worst.max(error);
     }
     Ok(format!(
