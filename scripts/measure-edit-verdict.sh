@@ -15,6 +15,13 @@
 #   scripts/measure-edit-verdict.sh --debuginfo the relink after an edit and a cold build of the
 #                                               checks, with the workspace's debug info against
 #                                               full debug info everywhere (~3 minutes)
+#   scripts/measure-edit-verdict.sh --mistakes  edit → verdict when the edit is a mistake: each of
+#                                               tests/mistakes/*.toml's planted alone, the lecture
+#                                               graded (its checks failing: the causes, the
+#                                               pictures' diagnoses, the report's images and 3D
+#                                               views), put back; per lecture the median and the
+#                                               slowest (~3 minutes; LECTURES as above).
+#                                               `--student --mistakes` in a student's tree
 #   scripts/measure-edit-verdict.sh --student   the same table in a student's tree: the handout
 #                                               (`grader handout`, in STUDENT_DIR or a temporary
 #                                               folder) with the reference's solutions put back,
@@ -27,7 +34,12 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
+# The mistakes' catalogue, from this repository (a student's tree has none).
+MISTAKES_DIR=${MISTAKES_DIR:-$PWD/tests/mistakes}
+export MISTAKES_DIR
+
 if [ "${1:-}" = "--student" ]; then
+  shift
   dir=${STUDENT_DIR:-$(mktemp -d)/student}
   cargo run -q -p grader -- handout "$dir"
   python3 - "$dir" <<'PY'
@@ -66,7 +78,51 @@ PY
     exit 1
   fi
   echo "a student's tree, every check passing: $dir"
-  exec bash "$dir/scripts/$(basename "$0")"
+  exec bash "$dir/scripts/$(basename "$0")" "$@"
+fi
+
+if [ "${1:-}" = "--mistakes" ]; then
+  cargo run -q -p grader > /dev/null 2>&1 || true
+  python3 - <<'PY'
+import glob, json, os, statistics, subprocess, time, tomllib
+def grade(n):
+    return subprocess.run(["cargo", "run", "-q", "-p", "grader", "--", n, "--format", "json"],
+                          capture_output=True, text=True)
+times = {}
+for catalogue in sorted(glob.glob(os.path.join(os.environ["MISTAKES_DIR"], "l[0-9][0-9].toml"))):
+    n = os.path.basename(catalogue)[1:3]
+    if n not in os.environ.get("LECTURES", n).split():
+        continue
+    grade(n)  # the lecture built before its first mistake, untimed
+    for mistake in tomllib.load(open(catalogue, "rb")).get("mistake", []):
+        path = mistake["file"]
+        text = open(path).read()
+        if text.count(mistake["find"]) != 1:
+            print(f"{n} skipped: not in this tree's {path}: {mistake['name'][:60]}")
+            continue
+        open(path, "w").write(text.replace(mistake["find"], mistake["replace"]))
+        try:
+            start = time.time()
+            ran = grade(n)
+            seconds = time.time() - start
+        finally:
+            # Put back with the time of now: cargo must compile the lecture again (a time in the
+            # past would leave the mistake compiled in).
+            open(path, "w").write(text)
+            os.utime(path, None)
+        try:
+            checks = json.loads(ran.stdout)["checks"]
+            verdict = f"{sum(c['status'] != 'passed' for c in checks):2} of {len(checks)} checks not passed"
+        except (ValueError, KeyError):
+            verdict = f"no report (exit {ran.returncode}): {ran.stderr.strip()[-200:]}"
+        times.setdefault(n, []).append(seconds)
+        print(f"{n} {seconds:5.2f} s  {verdict}  {mistake['name'][:70]}", flush=True)
+    grade(n)
+print("lecture  mistakes  median  slowest   (seconds)")
+for n, ts in sorted(times.items()):
+    print(f"{n}       {len(ts):8}  {statistics.median(ts):6.2f}  {max(ts):7.2f}")
+PY
+  exit 0
 fi
 
 if [ "${1:-}" = "--debuginfo" ]; then
